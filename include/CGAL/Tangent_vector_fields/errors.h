@@ -1,0 +1,61 @@
+// Copyright (c) 2026 The Tangent_vector_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TANGENT_VECTOR_FIELDS_ERRORS_H
+#define CGAL_TANGENT_VECTOR_FIELDS_ERRORS_H
+
+/// \file errors.h
+/// The exceptions this package throws.  Every check happens before any output
+/// map is written, so a throwing call leaves the user's maps untouched.
+
+#include <stdexcept>
+#include <string>
+
+namespace CGAL {
+namespace Tangent_vector_fields {
+
+/// What is wrong with a mesh that the package refuses.
+enum class Mesh_defect {
+  empty,                    ///< no faces
+  non_triangle_face,        ///< a face with other than three vertices
+  non_manifold_edge,        ///< an edge shared by more than two faces
+  non_manifold_vertex,      ///< a vertex whose faces form more than one fan
+  inconsistent_orientation, ///< two faces traverse their common edge in the same direction
+  garbage,                  ///< removed elements still stored (call `collect_garbage()`)
+  invalid_index,            ///< an element index outside `[0, n)` or repeated
+  non_finite_coordinate,    ///< a NaN or infinite vertex coordinate
+  degenerate_face           ///< a face of (nearly) zero area; see `use_intrinsic_mollification`
+};
+
+/// Thrown when a mesh cannot be processed; `defect()` says why and the message names the element.
+class Invalid_mesh : public std::invalid_argument
+{
+public:
+  Invalid_mesh(Mesh_defect defect, const std::string& what)
+    : std::invalid_argument(what), defect_(defect) {}
+  Mesh_defect defect() const { return defect_; }
+
+private:
+  Mesh_defect defect_;
+};
+
+/// Thrown for bad arguments other than the mesh: a field with NaN entries, a
+/// vector of the wrong size, an out-of-range option.
+class Invalid_input : public std::invalid_argument
+{
+public:
+  using std::invalid_argument::invalid_argument;
+};
+
+/// Thrown when a numerical self-check fails: a factorisation breaks down, or the
+/// computed harmonic space does not have the dimension the topology predicts.
+class Numerical_failure : public std::runtime_error
+{
+public:
+  using std::runtime_error::runtime_error;
+};
+
+} // namespace Tangent_vector_fields
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,410 @@
+// Copyright (c) 2026 The Tangent_vector_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#include <CGAL/Tangent_vector_fields/Operator_matrices.h>
+
+#include <algorithm>
+#include <functional>
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Tangent_vector_fields {
+
+namespace {
+
+typedef Operator_matrices::Sparse_matrix Sparse_matrix;
+typedef Operator_matrices::Vector Vector;
+typedef Eigen::SparseMatrix<double, Eigen::RowMajor> Row_sparse_matrix;
+
+// Fills a compressed column-major matrix from per-face 3x3 blocks.
+// `global(f, k)` is the row/column of local index k of face f (-1: dropped);
+// `local(f, a, b)` the block entry.  Duplicates are summed.
+Sparse_matrix assemble_face_blocks(int n, int nf, const std::function<int(int, int)>& global,
+                                   const std::function<void(int, double[3][3])>& local)
+{
+  std::vector<int> start(n + 1, 0);
+  std::vector<std::array<int, 3>> index(nf);
+  for(int f = 0; f < nf; ++f)
+  {
+    for(int k = 0; k < 3; ++k) index[f][k] = global(f, k);
+    int present = 0;
+    for(int k = 0; k < 3; ++k) present += index[f][k] >= 0;
+    for(int k = 0; k < 3; ++k)
+      if(index[f][k] >= 0) start[index[f][k] + 1] += present;
+  }
+  for(int c = 0; c < n; ++c) start[c + 1] += start[c];
+  std::vector<std::pair<int, double>> entries(start[n]);
+  std::vector<int> fill(start.begin(), start.end() - 1);
+  for(int f = 0; f < nf; ++f)
+  {
+    double block[3][3];
+    local(f, block);
+    for(int b = 0; b < 3; ++b)
+    {
+      const int col = index[f][b];
+      if(col < 0) continue;
+      for(int a = 0; a < 3; ++a)
+        if(index[f][a] >= 0) entries[fill[col]++] = {index[f][a], block[a][b]};
+    }
+  }
+  // Sort each column by row and merge duplicates in place.
+  Sparse_matrix A(n, n);
+  std::vector<int> outer(n + 1, 0);
+  std::vector<int> inner;
+  std::vector<double> values;
+  inner.reserve(entries.size() / 2);
+  values.reserve(entries.size() / 2);
+  for(int c = 0; c < n; ++c)
+  {
+    std::sort(entries.begin() + start[c], entries.begin() + start[c + 1],
+              [](const auto& x, const auto& y) { return x.first < y.first; });
+    for(int i = start[c]; i < start[c + 1]; ++i)
+    {
+      if(static_cast<int>(inner.size()) > outer[c] && inner.back() == entries[i].first)
+        values.back() += entries[i].second;
+      else
+      {
+        inner.push_back(entries[i].first);
+        values.push_back(entries[i].second);
+      }
+    }
+    outer[c + 1] = static_cast<int>(inner.size());
+  }
+  A.resizeNonZeros(static_cast<Eigen::Index>(inner.size()));
+  std::copy(outer.begin(), outer.end(), A.outerIndexPtr());
+  std::copy(inner.begin(), inner.end(), A.innerIndexPtr());
+  std::copy(values.begin(), values.end(), A.valuePtr());
+  return A;
+}
+
+Sparse_matrix diagonal_matrix(const Vector& d)
+{
+  Sparse_matrix D(d.size(), d.size());
+  D.resizeNonZeros(d.size());
+  for(Eigen::Index i = 0; i < d.size(); ++i)
+  {
+    D.outerIndexPtr()[i] = static_cast<int>(i);
+    D.innerIndexPtr()[i] = static_cast<int>(i);
+    D.valuePtr()[i] = d[i];
+  }
+  D.outerIndexPtr()[d.size()] = static_cast<int>(d.size());
+  return D;
+}
+
+// 1/x where x > 0, else 0 (vertices in no face have no mass).
+Vector safe_inverse(const Vector& d)
+{
+  return d.unaryExpr([](double x) { return x > 0 ? 1 / x : 0.; });
+}
+
+} // namespace
+
+struct Operator_matrices::Cache
+{
+  std::optional<Vector> face_areas, vertex_masses, edge_masses, field_masses;
+  std::optional<Vector> inverse_vertex_masses, inverse_edge_masses;
+  std::optional<Sparse_matrix> G, G_star, G_star_interior, M, M_star, MX, J, W, W_star, S, L, B;
+};
+
+Operator_matrices::Operator_matrices(std::shared_ptr<const Intrinsic_mesh> mesh)
+  : mesh_(std::move(mesh)), cache_(new Cache)
+{}
+
+Operator_matrices::~Operator_matrices() = default;
+
+const Vector& Operator_matrices::face_areas() const
+{
+  if(!cache_->face_areas)
+  {
+    Vector a(mesh_->number_of_faces());
+    for(int f = 0; f < a.size(); ++f) a[f] = mesh_->face_area(f);
+    cache_->face_areas = std::move(a);
+  }
+  return *cache_->face_areas;
+}
+
+const Vector& Operator_matrices::vertex_masses() const
+{
+  if(!cache_->vertex_masses)
+  {
+    Vector m = Vector::Zero(mesh_->number_of_vertices());
+    for(int f = 0; f < mesh_->number_of_faces(); ++f)
+      for(int v : mesh_->face_vertices(f)) m[v] += mesh_->face_area(f) / 3;
+    cache_->vertex_masses = std::move(m);
+  }
+  return *cache_->vertex_masses;
+}
+
+const Vector& Operator_matrices::edge_masses() const
+{
+  if(!cache_->edge_masses)
+  {
+    Vector m = Vector::Zero(mesh_->number_of_edges());
+    for(int f = 0; f < mesh_->number_of_faces(); ++f)
+      for(int e : mesh_->face_edges(f)) m[e] += mesh_->face_area(f) / 3;
+    cache_->edge_masses = std::move(m);
+  }
+  return *cache_->edge_masses;
+}
+
+const Vector& Operator_matrices::field_masses() const
+{
+  if(!cache_->field_masses)
+  {
+    const Vector& a = face_areas();
+    Vector m(2 * a.size());
+    for(Eigen::Index f = 0; f < a.size(); ++f) m[2 * f] = m[2 * f + 1] = a[f];
+    cache_->field_masses = std::move(m);
+  }
+  return *cache_->field_masses;
+}
+
+namespace {
+// Gradients of the three hat functions of face f in its frame, from the layout
+// p0 = (0,0), p1 = (l2,0), p2 = (x,y): grad phi_k = J (p_{k+2} - p_{k+1}) / (2A).
+std::array<std::array<double, 2>, 3> hat_gradients(const Intrinsic_mesh& mesh, int f)
+{
+  const double l2 = mesh.face_edge_length(f, 2);
+  const double x = mesh.corner2_layout(f)[0], y = mesh.corner2_layout(f)[1];
+  const double s = 1 / (2 * mesh.face_area(f));
+  return {{{-y * s, (x - l2) * s}, {y * s, -x * s}, {0., l2 * s}}};
+}
+
+// 2nf x n matrix with 3 entries per row: rows 2f, 2f+1 hold `scale` times the hat
+// gradients of face f in the columns `column(f, k)`.
+Sparse_matrix gradient_matrix(const Intrinsic_mesh& mesh, int columns, double scale,
+                              const std::function<int(int, int)>& column)
+{
+  const int nf = mesh.number_of_faces();
+  Row_sparse_matrix R(2 * nf, columns);
+  R.resizeNonZeros(6 * static_cast<Eigen::Index>(nf));
+  for(int f = 0; f < nf; ++f)
+  {
+    const auto g = hat_gradients(mesh, f);
+    std::array<int, 3> order = {0, 1, 2};
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return column(f, a) < column(f, b); });
+    for(int d = 0; d < 2; ++d)
+    {
+      const int row = 2 * f + d;
+      R.outerIndexPtr()[row] = 3 * row;
+      for(int i = 0; i < 3; ++i)
+      {
+        R.innerIndexPtr()[3 * row + i] = column(f, order[i]);
+        R.valuePtr()[3 * row + i] = scale * g[order[i]][d];
+      }
+    }
+  }
+  R.outerIndexPtr()[2 * nf] = 6 * nf;
+  return Sparse_matrix(R);
+}
+
+// Local cotan matrix of face f: C_ab = A grad phi_a . grad phi_b.
+void cotan_block(const Intrinsic_mesh& mesh, int f, double scale, double block[3][3])
+{
+  double cot[3];
+  for(int k = 0; k < 3; ++k) cot[k] = mesh.cotangent(f, k);
+  for(int a = 0; a < 3; ++a)
+  {
+    const int b = (a + 1) % 3, c = (a + 2) % 3;
+    block[a][a] = scale * 0.5 * (cot[b] + cot[c]);
+    block[a][b] = block[b][a] = -scale * 0.5 * cot[c];
+  }
+}
+} // namespace
+
+const Sparse_matrix& Operator_matrices::G() const
+{
+  if(!cache_->G)
+    cache_->G = gradient_matrix(*mesh_, mesh_->number_of_vertices(), 1.,
+                                [this](int f, int k) { return mesh_->face_vertices(f)[k]; });
+  return *cache_->G;
+}
+
+// psi_e = 1 - 2 phi_k for the edge e opposite corner k, so grad psi_e = -2 grad phi_k.
+const Sparse_matrix& Operator_matrices::G_star() const
+{
+  if(!cache_->G_star)
+    cache_->G_star = gradient_matrix(*mesh_, mesh_->number_of_edges(), -2.,
+                                     [this](int f, int k) { return mesh_->face_edges(f)[k]; });
+  return *cache_->G_star;
+}
+
+const Sparse_matrix& Operator_matrices::G_star_interior() const
+{
+  if(!cache_->G_star_interior)
+  {
+    // Boundary-edge columns move to the end, then are cut off.
+    const int ne = mesh_->number_of_edges(), ni = mesh_->number_of_interior_edges();
+    int next_boundary = ni;
+    auto column = [&](int f, int k) {
+      const int e = mesh_->face_edges(f)[k];
+      return mesh_->interior_edge_index(e);
+    };
+    std::vector<int> boundary_column(ne, -1);
+    for(int e = 0; e < ne; ++e)
+      if(mesh_->is_boundary_edge(e)) boundary_column[e] = next_boundary++;
+    Sparse_matrix full = gradient_matrix(*mesh_, ne, -2., [&](int f, int k) {
+      const int c = column(f, k);
+      return c >= 0 ? c : boundary_column[mesh_->face_edges(f)[k]];
+    });
+    cache_->G_star_interior = Sparse_matrix(full.leftCols(ni));
+  }
+  return *cache_->G_star_interior;
+}
+
+const Sparse_matrix& Operator_matrices::M() const
+{
+  if(!cache_->M) cache_->M = diagonal_matrix(vertex_masses());
+  return *cache_->M;
+}
+
+const Sparse_matrix& Operator_matrices::M_star() const
+{
+  if(!cache_->M_star) cache_->M_star = diagonal_matrix(edge_masses());
+  return *cache_->M_star;
+}
+
+const Sparse_matrix& Operator_matrices::MX() const
+{
+  if(!cache_->MX) cache_->MX = diagonal_matrix(field_masses());
+  return *cache_->MX;
+}
+
+const Sparse_matrix& Operator_matrices::J() const
+{
+  if(!cache_->J)
+  {
+    const int n = 2 * mesh_->number_of_faces();
+    Sparse_matrix J(n, n);
+    J.resizeNonZeros(n);
+    for(int c = 0; c < n; ++c)
+    {
+      // column 2f has +1 in row 2f+1; column 2f+1 has -1 in row 2f
+      J.outerIndexPtr()[c] = c;
+      J.innerIndexPtr()[c] = (c % 2 == 0) ? c + 1 : c - 1;
+      J.valuePtr()[c] = (c % 2 == 0) ? 1. : -1.;
+    }
+    J.outerIndexPtr()[n] = n;
+    cache_->J = std::move(J);
+  }
+  return *cache_->J;
+}
+
+const Sparse_matrix& Operator_matrices::W() const
+{
+  if(!cache_->W)
+    cache_->W = assemble_face_blocks(
+        mesh_->number_of_vertices(), mesh_->number_of_faces(),
+        [this](int f, int k) { return mesh_->face_vertices(f)[k]; },
+        [this](int f, double block[3][3]) { cotan_block(*mesh_, f, 1., block); });
+  return *cache_->W;
+}
+
+const Sparse_matrix& Operator_matrices::W_star() const
+{
+  // grad psi_e = -2 grad phi_k: the Crouzeix-Raviart block is 4 times the cotan block.
+  if(!cache_->W_star)
+    cache_->W_star = assemble_face_blocks(
+        mesh_->number_of_interior_edges(), mesh_->number_of_faces(),
+        [this](int f, int k) { return mesh_->interior_edge_index(mesh_->face_edges(f)[k]); },
+        [this](int f, double block[3][3]) { cotan_block(*mesh_, f, 4., block); });
+  return *cache_->W_star;
+}
+
+namespace {
+const Vector& cached_inverse(std::optional<Vector>& slot, const Vector& d)
+{
+  if(!slot) slot = safe_inverse(d);
+  return *slot;
+}
+} // namespace
+
+const Sparse_matrix& Operator_matrices::S() const
+{
+  if(!cache_->S)
+  {
+    const Vector& mx = field_masses();
+    const Vector& im = cached_inverse(cache_->inverse_vertex_masses, vertex_masses());
+    Vector interior_mass(mesh_->number_of_interior_edges());
+    for(int i = 0; i < interior_mass.size(); ++i) interior_mass[i] = edge_masses()[mesh_->interior_edges()[i]];
+    const Vector ims = safe_inverse(interior_mass);
+    // S = A M^-1 A^T + C M*^-1 C^T with A = MX G and C = MX J G* (J^T = -J).
+    const Sparse_matrix A = mx.asDiagonal() * G();
+    const Sparse_matrix C = mx.asDiagonal() * (J() * G_star_interior());
+    const Sparse_matrix AT = A.transpose(), CT = C.transpose();
+    Sparse_matrix S = A * (im.asDiagonal() * AT);
+    S += C * (ims.asDiagonal() * CT);
+    cache_->S = std::move(S);
+  }
+  return *cache_->S;
+}
+
+const Sparse_matrix& Operator_matrices::L() const
+{
+  if(!cache_->L) cache_->L = Sparse_matrix(safe_inverse(field_masses()).asDiagonal() * S());
+  return *cache_->L;
+}
+
+const Sparse_matrix& Operator_matrices::B() const
+{
+  if(!cache_->B)
+  {
+    const Sparse_matrix& s = S();
+    cache_->B = Sparse_matrix(s * (safe_inverse(field_masses()).asDiagonal() * s));
+  }
+  return *cache_->B;
+}
+
+Vector Operator_matrices::rotate(const Vector& v) const
+{
+  Vector r(v.size());
+  for(Eigen::Index f = 0; 2 * f < v.size(); ++f)
+  {
+    r[2 * f] = -v[2 * f + 1];
+    r[2 * f + 1] = v[2 * f];
+  }
+  return r;
+}
+
+Vector Operator_matrices::divergence(const Vector& v) const
+{
+  const Vector& im = cached_inverse(cache_->inverse_vertex_masses, vertex_masses());
+  return -im.cwiseProduct(G().transpose() * field_masses().cwiseProduct(v));
+}
+
+Vector Operator_matrices::curl(const Vector& v) const
+{
+  const Vector& im = cached_inverse(cache_->inverse_vertex_masses, vertex_masses());
+  return im.cwiseProduct(G().transpose() * rotate(field_masses().cwiseProduct(v)));
+}
+
+Vector Operator_matrices::nonconforming_divergence(const Vector& v) const
+{
+  const Vector& im = cached_inverse(cache_->inverse_edge_masses, edge_masses());
+  return -im.cwiseProduct(G_star().transpose() * field_masses().cwiseProduct(v));
+}
+
+Vector Operator_matrices::nonconforming_curl(const Vector& v) const
+{
+  const Vector& im = cached_inverse(cache_->inverse_edge_masses, edge_masses());
+  return im.cwiseProduct(G_star().transpose() * rotate(field_masses().cwiseProduct(v)));
+}
+
+Vector Operator_matrices::interior_to_all_edges(const Vector& interior_values) const
+{
+  Vector all = Vector::Zero(mesh_->number_of_edges());
+  for(int i = 0; i < interior_values.size(); ++i) all[mesh_->interior_edges()[i]] = interior_values[i];
+  return all;
+}
+
+Vector Operator_matrices::all_to_interior_edges(const Vector& edge_values) const
+{
+  Vector interior(mesh_->number_of_interior_edges());
+  for(int i = 0; i < interior.size(); ++i) interior[i] = edge_values[mesh_->interior_edges()[i]];
+  return interior;
+}
+
+} // namespace Tangent_vector_fields
+} // namespace CGAL

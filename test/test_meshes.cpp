@@ -1,0 +1,246 @@
+// Copyright (c) 2026 The Tangent_vector_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#include "test_meshes.h"
+
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#include <fstream>
+
+namespace tvf_test {
+
+Mesh make_mesh(const std::vector<Point_3>& points, const std::vector<std::array<int, 3>>& triangles)
+{
+  Mesh mesh;
+  std::vector<Vertex_index> v;
+  for(const Point_3& p : points) v.push_back(mesh.add_vertex(p));
+  for(const auto& t : triangles)
+    if(mesh.add_face(v[t[0]], v[t[1]], v[t[2]]) == Mesh::null_face()) throw std::runtime_error("make_mesh: bad face");
+  return mesh;
+}
+
+Mesh make_icosphere(int levels)
+{
+  const double t = (1 + std::sqrt(5.0)) / 2;
+  std::vector<Point_3> p = {{-1, t, 0}, {1, t, 0},  {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
+                            {0, -1, -t}, {0, 1, -t}, {t, 0, -1},  {t, 0, 1},  {-t, 0, -1}, {-t, 0, 1}};
+  std::vector<std::array<int, 3>> f = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
+                                       {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                                       {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
+                                       {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
+  auto normalized = [](const Point_3& q) {
+    const double n = std::sqrt(q.x() * q.x() + q.y() * q.y() + q.z() * q.z());
+    return Point_3(q.x() / n, q.y() / n, q.z() / n);
+  };
+  for(Point_3& q : p) q = normalized(q);
+  for(int l = 0; l < levels; ++l)
+  {
+    std::map<std::pair<int, int>, int> midpoint;
+    auto mid = [&](int a, int b) {
+      const auto key = std::make_pair(std::min(a, b), std::max(a, b));
+      auto it = midpoint.find(key);
+      if(it != midpoint.end()) return it->second;
+      p.push_back(normalized(CGAL::midpoint(p[a], p[b])));
+      return midpoint[key] = static_cast<int>(p.size()) - 1;
+    };
+    std::vector<std::array<int, 3>> g;
+    for(const auto& t3 : f)
+    {
+      const int a = mid(t3[0], t3[1]), b = mid(t3[1], t3[2]), c = mid(t3[2], t3[0]);
+      g.push_back({t3[0], a, c});
+      g.push_back({t3[1], b, a});
+      g.push_back({t3[2], c, b});
+      g.push_back({a, b, c});
+    }
+    f = std::move(g);
+  }
+  return make_mesh(p, f);
+}
+
+Mesh make_torus(int n, int m, double R, double r, double jitter, unsigned seed)
+{
+  std::mt19937 gen(seed);
+  std::uniform_real_distribution<double> u(-jitter, jitter);
+  std::vector<Point_3> p;
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < m; ++j)
+    {
+      const double a = 2 * M_PI * (i + u(gen)) / n, b = 2 * M_PI * (j + u(gen)) / m;
+      p.emplace_back((R + r * std::cos(b)) * std::cos(a), (R + r * std::cos(b)) * std::sin(a), r * std::sin(b));
+    }
+  std::vector<std::array<int, 3>> f;
+  auto id = [&](int i, int j) { return ((i + n) % n) * m + (j + m) % m; };
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < m; ++j)
+    {
+      const int a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
+      if((i + j) % 3 == 0)
+      {
+        f.push_back({a, b, d});
+        f.push_back({b, c, d});
+      }
+      else
+      {
+        f.push_back({a, b, c});
+        f.push_back({a, c, d});
+      }
+    }
+  return make_mesh(p, f);
+}
+
+Mesh make_disk(int rings, double hole_radius, double jitter, unsigned seed)
+{
+  // Rings of vertices at radius hole + (1 - hole) k / rings; ring k has 6k
+  // vertices (or a fixed count for an annulus), joined by triangle strips.
+  std::mt19937 gen(seed);
+  std::uniform_real_distribution<double> u(-jitter, jitter);
+  std::vector<Point_3> p;
+  std::vector<std::vector<int>> ring;
+  const bool annulus = hole_radius > 0;
+  const int first = annulus ? 0 : 1;
+  if(!annulus)
+  {
+    p.emplace_back(0, 0, 0);
+    ring.push_back({0});
+  }
+  for(int k = first; k <= rings; ++k)
+  {
+    const int count = annulus ? 6 * (rings + 2) + 3 * k : 6 * k;
+    const double rad = hole_radius + (1 - hole_radius) * k / rings;
+    const bool on_boundary = k == rings || (annulus && k == 0);
+    std::vector<int> ids;
+    for(int i = 0; i < count; ++i)
+    {
+      const double dr = on_boundary ? 0 : u(gen) * (1 - hole_radius) / rings;
+      const double a = 2 * M_PI * (i + u(gen)) / count;
+      p.emplace_back((rad + dr) * std::cos(a), (rad + dr) * std::sin(a), 0);
+      ids.push_back(static_cast<int>(p.size()) - 1);
+    }
+    ring.push_back(ids);
+  }
+  std::vector<std::array<int, 3>> f;
+  for(std::size_t k = 0; k + 1 < ring.size(); ++k)
+  {
+    const auto& in = ring[k];
+    const auto& out = ring[k + 1];
+    if(in.size() == 1)
+    {
+      for(std::size_t i = 0; i < out.size(); ++i) f.push_back({in[0], out[i], out[(i + 1) % out.size()]});
+      continue;
+    }
+    // Merge the two rings by angle: advance on whichever ring is behind.
+    std::size_t i = 0, j = 0;
+    const std::size_t ni = in.size(), no = out.size();
+    while(i < ni || j < no)
+    {
+      const double ai = 2 * M_PI * (i + 0.5) / ni, aj = 2 * M_PI * (j + 0.5) / no;
+      if(j < no && (i >= ni || aj < ai))
+      {
+        f.push_back({in[i % ni], out[j % no], out[(j + 1) % no]});
+        ++j;
+      }
+      else
+      {
+        f.push_back({in[i % ni], out[j % no], in[(i + 1) % ni]});
+        ++i;
+      }
+    }
+  }
+  return make_mesh(p, f);
+}
+
+Mesh make_curved_disk(int rings, double hole_radius)
+{
+  Mesh mesh = make_disk(rings, hole_radius);
+  for(Vertex_index v : mesh.vertices())
+  {
+    const Point_3& q = mesh.point(v);
+    mesh.point(v) = Point_3(q.x(), q.y(), 0.3 * std::sin(2 * q.x()) * std::cos(3 * q.y()));
+  }
+  return mesh;
+}
+
+void transform(Mesh& mesh, double s, const std::array<double, 9>& R, const Vector_3& t)
+{
+  for(Vertex_index v : mesh.vertices())
+  {
+    const Point_3& q = mesh.point(v);
+    mesh.point(v) = Point_3(s * (R[0] * q.x() + R[1] * q.y() + R[2] * q.z()) + t.x(),
+                            s * (R[3] * q.x() + R[4] * q.y() + R[5] * q.z()) + t.y(),
+                            s * (R[6] * q.x() + R[7] * q.y() + R[8] * q.z()) + t.z());
+  }
+}
+
+std::array<double, 9> rotation_matrix(Vector_3 axis, double angle)
+{
+  axis = axis / std::sqrt(axis.squared_length());
+  const double c = std::cos(angle), s = std::sin(angle), x = axis.x(), y = axis.y(), z = axis.z();
+  return {c + x * x * (1 - c),     x * y * (1 - c) - z * s, x * z * (1 - c) + y * s,
+          y * x * (1 - c) + z * s, c + y * y * (1 - c),     y * z * (1 - c) - x * s,
+          z * x * (1 - c) - y * s, z * y * (1 - c) + x * s, c + z * z * (1 - c)};
+}
+
+void jitter_vertices(Mesh& mesh, double amount, unsigned seed)
+{
+  double total = 0;
+  for(Edge_index e : mesh.edges())
+    total += std::sqrt(CGAL::squared_distance(mesh.point(mesh.vertex(e, 0)), mesh.point(mesh.vertex(e, 1))));
+  const double h = amount * total / mesh.number_of_edges();
+  std::mt19937 gen(seed);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for(Vertex_index v : mesh.vertices()) mesh.point(v) = mesh.point(v) + Vector_3(u(gen), u(gen), u(gen)) * (h / 2);
+}
+
+std::string cgal_data_dir()
+{
+#ifdef TVF_CGAL_DATA_DIR
+  std::ifstream probe(std::string(TVF_CGAL_DATA_DIR) + "/meshes/elephant.off");
+  if(probe) return TVF_CGAL_DATA_DIR;
+#endif
+  return "";
+}
+
+std::string shared_data_dir()
+{
+#ifdef TVF_SHARED_DATA_DIR
+  std::ifstream probe(std::string(TVF_SHARED_DATA_DIR) + "/README.md");
+  if(probe) return TVF_SHARED_DATA_DIR;
+#endif
+  return "";
+}
+
+bool read_mesh(const std::string& path, Mesh& mesh)
+{
+  mesh.clear();
+  return CGAL::IO::read_polygon_mesh(path, mesh, CGAL::parameters::verbose(false)) && !is_empty(mesh);
+}
+
+std::vector<Vector_3> ambient_linear_field(const Mesh& mesh, unsigned seed)
+{
+  std::mt19937 gen(seed);
+  std::normal_distribution<double> n;
+  double B[3][3], a[3];
+  for(int i = 0; i < 3; ++i)
+  {
+    a[i] = n(gen);
+    for(int j = 0; j < 3; ++j) B[i][j] = n(gen);
+  }
+  std::vector<Vector_3> out;
+  for(Face_index f : mesh.faces())
+  {
+    double c[3] = {0, 0, 0};
+    for(Vertex_index v : vertices_around_face(mesh.halfedge(f), mesh))
+    {
+      c[0] += mesh.point(v).x() / 3;
+      c[1] += mesh.point(v).y() / 3;
+      c[2] += mesh.point(v).z() / 3;
+    }
+    double w[3];
+    for(int i = 0; i < 3; ++i) w[i] = a[i] + B[i][0] * c[0] + B[i][1] * c[1] + B[i][2] * c[2];
+    out.emplace_back(w[0], w[1], w[2]);
+  }
+  return out;
+}
+
+} // namespace tvf_test

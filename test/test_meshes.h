@@ -1,0 +1,68 @@
+// Copyright (c) 2026 The Tangent_vector_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+// Small meshes generated in code for the tests, and access to real meshes.
+
+#ifndef TVF_TEST_MESHES_H
+#define TVF_TEST_MESHES_H
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <cmath>
+#include <map>
+#include <random>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace tvf_test {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
+typedef Kernel::Point_3 Point_3;
+typedef Kernel::Vector_3 Vector_3;
+typedef CGAL::Surface_mesh<Point_3> Mesh;
+typedef Mesh::Vertex_index Vertex_index;
+typedef Mesh::Face_index Face_index;
+typedef Mesh::Edge_index Edge_index;
+
+/// Mesh from a point list and triangles.
+Mesh make_mesh(const std::vector<Point_3>& points, const std::vector<std::array<int, 3>>& triangles);
+
+/// Icosahedron subdivided `levels` times, projected onto the unit sphere.
+Mesh make_icosphere(int levels);
+
+/// Torus with `n` x `m` quads split into triangles, radii R and r; grid parameters
+/// jittered by `jitter` (fraction of a cell) so that the mesh is irregular.
+Mesh make_torus(int n, int m, double R = 1.0, double r = 0.4, double jitter = 0.25, unsigned seed = 1);
+
+/// Irregular triangulated disk (genus 0, one boundary loop) of radius 1, or an
+/// annulus (inner radius `hole_radius` > 0), with `rings` rings of vertices.
+Mesh make_disk(int rings, double hole_radius = 0.0, double jitter = 0.25, unsigned seed = 2);
+
+/// A curved (non-planar) patch: the disk lifted onto z = 0.3 sin(2x) cos(3y).
+Mesh make_curved_disk(int rings, double hole_radius = 0.0);
+
+/// Applies p -> s * R p + t to every vertex.
+void transform(Mesh& mesh, double scale, const std::array<double, 9>& rotation = {1, 0, 0, 0, 1, 0, 0, 0, 1},
+               const Vector_3& translation = Vector_3(0, 0, 0));
+
+/// A rotation matrix (row-major) about axis `axis` by `angle`.
+std::array<double, 9> rotation_matrix(Vector_3 axis, double angle);
+
+/// Moves every vertex by a random vector of length up to `amount` times the mean edge length.
+void jitter_vertices(Mesh& mesh, double amount, unsigned seed);
+
+/// CGAL's data tree (`meshes/...`) if unpacked, else empty.
+std::string cgal_data_dir();
+/// `../shared/data` if present, else empty.
+std::string shared_data_dir();
+/// Reads a mesh; false if the file is absent or unreadable.
+bool read_mesh(const std::string& path, Mesh& mesh);
+
+/// A smooth ambient field projected to the faces: a + B p at the face centroid.
+std::vector<Vector_3> ambient_linear_field(const Mesh& mesh, unsigned seed);
+
+} // namespace tvf_test
+
+#endif
