@@ -228,16 +228,18 @@ const Eigen::MatrixXd& Hodge_solver::harmonic_basis(std::uint64_t seed) const
   const Eigen::MatrixXd GQ = ops_->G_star() * Q;
   for(Eigen::Index j = 0; j < m; ++j) H.col(j) -= ops_->rotate(GQ.col(j));
 
-  // Rank from the spectrum of the MX-Gram matrix: the projections span the harmonic
-  // space, so `dim` singular values are O(1) and two are at the solver's roundoff.
-  // The cut 1e-6 lies far from both (they were 1e-3 and below 1e-11 in tests).
-  const Eigen::VectorXd& mx = ops_->field_masses();
-  const Eigen::MatrixXd K = H.transpose() * mx.asDiagonal() * H;
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(K);
-  const Eigen::VectorXd lambda = eig.eigenvalues().reverse();
-  const double top = std::sqrt(std::max(lambda[0], 0.));
-  Eigen::VectorXd sigma(m);
-  for(int i = 0; i < m; ++i) sigma[i] = top > 0 ? std::sqrt(std::max(lambda[i], 0.)) / top : 0.;
+  // Rank from the singular values of sqrt(MX) H (QR, then SVD of the small R; the
+  // Gram matrix would square them and hide everything below 1e-8).  The projections
+  // span the harmonic space, so `dim` singular values are O(1) relative to the largest
+  // and two are at the level of the solver's roundoff; the cut 1e-6 lies far from both.
+  const Eigen::VectorXd sqrt_mass = ops_->field_masses().cwiseSqrt();
+  const Eigen::MatrixXd Y = sqrt_mass.asDiagonal() * H;
+  Eigen::HouseholderQR<Eigen::MatrixXd> qr(Y);
+  const Eigen::MatrixXd R_factor = qr.matrixQR().topRows(m).triangularView<Eigen::Upper>();
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(R_factor, Eigen::ComputeFullV);
+  const Eigen::VectorXd& singular = svd.singularValues();
+  const double top = singular[0];
+  Eigen::VectorXd sigma = top > 0 ? Eigen::VectorXd(singular / top) : Eigen::VectorXd::Zero(m);
   impl_->rank_spectrum = sigma;
   const double cut = 1e-6;
   int rank = 0;
@@ -250,11 +252,10 @@ const Eigen::MatrixXd& Hodge_solver::harmonic_basis(std::uint64_t seed) const
     for(int i = std::max(0, dim - 2); i < m; ++i) msg << ' ' << sigma[i];
     throw Numerical_failure(msg.str());
   }
-  const Eigen::MatrixXd V = eig.eigenvectors().rowwise().reverse().leftCols(dim);
-  Eigen::MatrixXd basis = H * V;
-  for(int j = 0; j < dim; ++j) basis.col(j) /= std::sqrt(lambda[j]);
+  Eigen::MatrixXd basis = H * svd.matrixV().leftCols(dim);
+  for(int j = 0; j < dim; ++j) basis.col(j) /= singular[j];
   // A second pass (Cholesky of the new Gram matrix) brings orthonormality to roundoff.
-  const Eigen::MatrixXd K2 = basis.transpose() * mx.asDiagonal() * basis;
+  const Eigen::MatrixXd K2 = basis.transpose() * ops_->field_masses().asDiagonal() * basis;
   Eigen::LLT<Eigen::MatrixXd> llt(K2);
   basis = llt.matrixU().solve<Eigen::OnTheRight>(basis);
   impl_->harmonic_basis = std::move(basis);

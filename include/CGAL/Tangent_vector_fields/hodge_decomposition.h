@@ -80,14 +80,14 @@ public:
   }
 
 private:
-  void write_field(const Eigen::VectorXd&, internal_np::Param_not_found) const {}
+  void write_field(const Eigen::VectorXd&, CGAL::internal_np::Param_not_found) const {}
   template <class FaceVectorMap>
   void write_field(const Eigen::VectorXd& x, FaceVectorMap map) const
   {
     operators_.from_frame_coordinates(x, map);
   }
   template <class Elements>
-  static void write_scalars(const Elements&, const Eigen::VectorXd&, internal_np::Param_not_found) {}
+  static void write_scalars(const Elements&, const Eigen::VectorXd&, CGAL::internal_np::Param_not_found) {}
   template <class Elements, class ScalarMap>
   static void write_scalars(const Elements& elements, const Eigen::VectorXd& x, ScalarMap map)
   {
