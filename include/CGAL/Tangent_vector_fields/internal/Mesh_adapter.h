@@ -81,10 +81,11 @@ public:
       int k = 0;
       do
       {
-        if(k == 3)
-          throw Invalid_mesh(Mesh_defect::non_triangle_face, "face " + std::to_string(f) + " has more than three vertices");
-        face_vertices[f][k] = static_cast<int>(get(vim, source(g, mesh)));
-        face_edges[f][k] = static_cast<int>(get(eim, edge(g, mesh)));
+        if(k < 3)
+        {
+          face_vertices[f][k] = static_cast<int>(get(vim, source(g, mesh)));
+          face_edges[f][k] = static_cast<int>(get(eim, edge(g, mesh)));
+        }
         ++k;
         g = next(g, mesh);
       } while(g != h);

@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Installs the build and run-time dependencies from Debian 12's packages.
+set -euo pipefail
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+packages=(
+  build-essential cmake
+  libcgal-dev libgmp-dev libmpfr-dev libboost-dev
+  libeigen3-dev libspectra-dev
+  libsuitesparse-dev libopenblas0-pthread   # CHOLMOD, with OpenBLAS as its BLAS (about 3x faster than the reference BLAS)
+  libgtest-dev libbenchmark-dev
+  libcgal-demo                               # CGAL's data tree: the default mesh and the test meshes
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
