@@ -321,21 +321,112 @@ const Vector& cached_inverse(std::optional<Vector>& slot, const Vector& d)
 }
 } // namespace
 
+// S = sum_v a_v a_v^T / M_v + sum_e c_e c_e^T / M*_e (interior e), with a_v the
+// column of MX G for vertex v and c_e that of MX J G* for edge e.  Assembled column
+// block by column block (two columns per face) from the faces around each vertex:
+// an order of magnitude faster than the general sparse products.
 const Sparse_matrix& Operator_matrices::S() const
 {
   if(!cache_->S)
   {
-    const Vector& mx = field_masses();
-    const Vector& im = cached_inverse(cache_->inverse_vertex_masses, vertex_masses());
-    Vector interior_mass(mesh_->number_of_interior_edges());
-    for(int i = 0; i < interior_mass.size(); ++i) interior_mass[i] = edge_masses()[mesh_->interior_edges()[i]];
-    const Vector ims = safe_inverse(interior_mass);
-    // S = A M^-1 A^T + C M*^-1 C^T with A = MX G and C = MX J G* (J^T = -J).
-    const Sparse_matrix A = mx.asDiagonal() * G();
-    const Sparse_matrix C = mx.asDiagonal() * (J() * G_star_interior());
-    const Sparse_matrix AT = A.transpose(), CT = C.transpose();
-    Sparse_matrix S = A * (im.asDiagonal() * AT);
-    S += C * (ims.asDiagonal() * CT);
+    const Intrinsic_mesh& m = *mesh_;
+    const int nf = m.number_of_faces(), nv = m.number_of_vertices();
+    const Vector& inverse_mass = cached_inverse(cache_->inverse_vertex_masses, vertex_masses());
+    const Vector& inverse_edge_mass = cached_inverse(cache_->inverse_edge_masses, edge_masses());
+
+    // Faces around each vertex (CSR), with the local corner of the vertex.
+    std::vector<int> first(nv + 1, 0);
+    for(int f = 0; f < nf; ++f)
+      for(int v : m.face_vertices(f)) ++first[v + 1];
+    for(int v = 0; v < nv; ++v) first[v + 1] += first[v];
+    std::vector<std::pair<int, int>> corners(first[nv]);
+    {
+      std::vector<int> fill(first.begin(), first.end() - 1);
+      for(int f = 0; f < nf; ++f)
+        for(int k = 0; k < 3; ++k) corners[fill[m.face_vertices(f)[k]]++] = {f, k};
+    }
+    // a_v restricted to face f (corner k): area * grad phi_k; c_e on face f
+    // (e opposite corner k): area * J (-2 grad phi_k).
+    std::vector<std::array<std::array<double, 2>, 3>> a(nf), c(nf);
+    for(int f = 0; f < nf; ++f)
+    {
+      const auto g = hat_gradients(m, f);
+      const double area = m.face_area(f);
+      for(int k = 0; k < 3; ++k)
+      {
+        a[f][k] = {area * g[k][0], area * g[k][1]};
+        c[f][k] = {2 * area * g[k][1], -2 * area * g[k][0]};
+      }
+    }
+
+    struct Block
+    {
+      int face;
+      double v[2][2]; // v[row][col]: rows of face `face`, columns of the current face
+    };
+    std::vector<Block> blocks;
+    std::vector<int> outer(2 * nf + 1, 0);
+    std::vector<int> inner;
+    std::vector<double> values;
+    inner.reserve(static_cast<std::size_t>(nf) * 52);
+    values.reserve(static_cast<std::size_t>(nf) * 52);
+    std::vector<double> second_column;
+    for(int g = 0; g < nf; ++g)
+    {
+      blocks.clear();
+      for(int kg = 0; kg < 3; ++kg)
+      {
+        const int v = m.face_vertices(g)[kg];
+        const double w = inverse_mass[v];
+        const auto& ag = a[g][kg];
+        for(int i = first[v]; i < first[v + 1]; ++i)
+        {
+          const auto [f, kf] = corners[i];
+          const auto& af = a[f][kf];
+          blocks.push_back({f, {{w * af[0] * ag[0], w * af[0] * ag[1]}, {w * af[1] * ag[0], w * af[1] * ag[1]}}});
+        }
+        const int e = m.face_edges(g)[kg];
+        if(m.is_boundary_edge(e)) continue;
+        const double we = inverse_edge_mass[e];
+        const auto& cg = c[g][kg];
+        for(int f : m.edge_faces(e))
+        {
+          int kf = 0;
+          while(m.face_edges(f)[kf] != e) ++kf;
+          const auto& cf = c[f][kf];
+          blocks.push_back({f, {{we * cf[0] * cg[0], we * cf[0] * cg[1]}, {we * cf[1] * cg[0], we * cf[1] * cg[1]}}});
+        }
+      }
+      std::sort(blocks.begin(), blocks.end(), [](const Block& x, const Block& y) { return x.face < y.face; });
+      // Column 2g goes straight to the output, column 2g+1 is buffered.
+      second_column.clear();
+      for(std::size_t i = 0; i < blocks.size();)
+      {
+        Block sum = blocks[i];
+        for(++i; i < blocks.size() && blocks[i].face == sum.face; ++i)
+          for(int r = 0; r < 2; ++r)
+            for(int q = 0; q < 2; ++q) sum.v[r][q] += blocks[i].v[r][q];
+        for(int r = 0; r < 2; ++r)
+        {
+          inner.push_back(2 * sum.face + r);
+          values.push_back(sum.v[r][0]);
+          second_column.push_back(sum.v[r][1]);
+        }
+      }
+      const std::size_t count = second_column.size();
+      outer[2 * g + 1] = static_cast<int>(inner.size());
+      for(std::size_t i = 0; i < count; ++i)
+      {
+        inner.push_back(inner[inner.size() - count]);
+        values.push_back(second_column[i]);
+      }
+      outer[2 * g + 2] = static_cast<int>(inner.size());
+    }
+    Sparse_matrix S(2 * nf, 2 * nf);
+    S.resizeNonZeros(static_cast<Eigen::Index>(inner.size()));
+    std::copy(outer.begin(), outer.end(), S.outerIndexPtr());
+    std::copy(inner.begin(), inner.end(), S.innerIndexPtr());
+    std::copy(values.begin(), values.end(), S.valuePtr());
     cache_->S = std::move(S);
   }
   return *cache_->S;

@@ -137,6 +137,15 @@ TEST(Operators, DirichletEnergyIsSymmetricSemidefiniteWithHarmonicKernel)
     const auto& A = ops.matrices();
     const Eigen::MatrixXd S = Eigen::MatrixXd(A.S());
     EXPECT_LT((S - S.transpose()).norm(), 1e-13 * S.norm());
+    // The directly assembled S equals the product formula of SPEC 2 (interior edges).
+    const Eigen::MatrixXd MX = Eigen::MatrixXd(A.MX()), G = Eigen::MatrixXd(A.G()), J = Eigen::MatrixXd(A.J());
+    const Eigen::MatrixXd Gs = Eigen::MatrixXd(A.G_star_interior());
+    Eigen::VectorXd interior_mass(Gs.cols());
+    for(int i = 0; i < Gs.cols(); ++i) interior_mass[i] = A.edge_masses()[ops.intrinsic_mesh().interior_edges()[i]];
+    const Eigen::MatrixXd formula =
+        MX * (G * A.vertex_masses().cwiseInverse().asDiagonal() * G.transpose() -
+              J * Gs * interior_mass.cwiseInverse().asDiagonal() * Gs.transpose() * J) * MX;
+    EXPECT_LT((S - formula).norm(), 1e-13 * S.norm());
     // Generalised eigenvalues of S x = lambda MX x: all >= 0, exactly dim H of them zero.
     const Eigen::VectorXd inv_sqrt_mass = A.field_masses().cwiseSqrt().cwiseInverse();
     const Eigen::MatrixXd Sn = inv_sqrt_mass.asDiagonal() * S * inv_sqrt_mass.asDiagonal();
