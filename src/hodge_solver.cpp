@@ -3,6 +3,7 @@
 
 #include <CGAL/Tangent_vector_fields/Hodge_solver.h>
 #include <CGAL/Tangent_vector_fields/errors.h>
+#include <CGAL/Tangent_vector_fields/internal/compressed_matrix.h>
 
 #include <Eigen/Dense>
 
@@ -35,12 +36,7 @@ Sparse_matrix principal_submatrix(const Sparse_matrix& A, const std::vector<int>
       }
     outer[unknown[c] + 1] = static_cast<int>(inner.size());
   }
-  Sparse_matrix B(m, m);
-  B.resizeNonZeros(static_cast<Eigen::Index>(inner.size()));
-  std::copy(outer.begin(), outer.end(), B.outerIndexPtr());
-  std::copy(inner.begin(), inner.end(), B.innerIndexPtr());
-  std::copy(values.begin(), values.end(), B.valuePtr());
-  return B;
+  return internal::compressed_matrix(m, m, outer, inner, values);
 }
 
 // A linear system on a subset of the unknowns (the others are pinned to zero).

@@ -18,6 +18,7 @@ namespace {
 typedef Intrinsic_mesh::Vector Vector;
 
 Vector sub(const Vector& a, const Vector& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+Vector add(const Vector& a, const Vector& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
 Vector cross(const Vector& a, const Vector& b)
 {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
@@ -369,7 +370,7 @@ void Intrinsic_mesh::compute_layout_and_frames()
           if(g >= 0 && g != f)
           {
             const auto& t = face_vertices_[g];
-            n = sub(n, scaled(cross(sub(positions_[t[1]], positions_[t[0]]), sub(positions_[t[2]], positions_[t[0]])), -1));
+            n = add(n, cross(sub(positions_[t[1]], positions_[t[0]]), sub(positions_[t[2]], positions_[t[0]])));
           }
       nn = norm(n);
       if(!(nn > 0)) { n = {0, 0, 1}; nn = 1; }

@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 
 #include <CGAL/Tangent_vector_fields/Operator_matrices.h>
+#include <CGAL/Tangent_vector_fields/internal/compressed_matrix.h>
 
 #include <algorithm>
 #include <functional>
@@ -49,8 +50,7 @@ Sparse_matrix assemble_face_blocks(int n, int nf, const std::function<int(int, i
         if(index[f][a] >= 0) entries[fill[col]++] = {index[f][a], block[a][b]};
     }
   }
-  // Sort each column by row and merge duplicates in place.
-  Sparse_matrix A(n, n);
+  // Sort each column by row and merge duplicates.
   std::vector<int> outer(n + 1, 0);
   std::vector<int> inner;
   std::vector<double> values;
@@ -72,11 +72,7 @@ Sparse_matrix assemble_face_blocks(int n, int nf, const std::function<int(int, i
     }
     outer[c + 1] = static_cast<int>(inner.size());
   }
-  A.resizeNonZeros(static_cast<Eigen::Index>(inner.size()));
-  std::copy(outer.begin(), outer.end(), A.outerIndexPtr());
-  std::copy(inner.begin(), inner.end(), A.innerIndexPtr());
-  std::copy(values.begin(), values.end(), A.valuePtr());
-  return A;
+  return internal::compressed_matrix(n, n, outer, inner, values);
 }
 
 Sparse_matrix diagonal_matrix(const Vector& d)
@@ -235,20 +231,14 @@ const Sparse_matrix& Operator_matrices::G_star_interior() const
 {
   if(!cache_->G_star_interior)
   {
-    // Boundary-edge columns move to the end, then are cut off.
+    // Number interior edges first and boundary edges after them, then cut those off.
     const int ne = mesh_->number_of_edges(), ni = mesh_->number_of_interior_edges();
+    std::vector<int> column(ne);
     int next_boundary = ni;
-    auto column = [&](int f, int k) {
-      const int e = mesh_->face_edges(f)[k];
-      return mesh_->interior_edge_index(e);
-    };
-    std::vector<int> boundary_column(ne, -1);
     for(int e = 0; e < ne; ++e)
-      if(mesh_->is_boundary_edge(e)) boundary_column[e] = next_boundary++;
-    Sparse_matrix full = gradient_matrix(*mesh_, ne, -2., [&](int f, int k) {
-      const int c = column(f, k);
-      return c >= 0 ? c : boundary_column[mesh_->face_edges(f)[k]];
-    });
+      column[e] = mesh_->is_boundary_edge(e) ? next_boundary++ : mesh_->interior_edge_index(e);
+    const Sparse_matrix full =
+        gradient_matrix(*mesh_, ne, -2., [&](int f, int k) { return column[mesh_->face_edges(f)[k]]; });
     cache_->G_star_interior = Sparse_matrix(full.leftCols(ni));
   }
   return *cache_->G_star_interior;
@@ -422,12 +412,7 @@ const Sparse_matrix& Operator_matrices::S() const
       }
       outer[2 * g + 2] = static_cast<int>(inner.size());
     }
-    Sparse_matrix S(2 * nf, 2 * nf);
-    S.resizeNonZeros(static_cast<Eigen::Index>(inner.size()));
-    std::copy(outer.begin(), outer.end(), S.outerIndexPtr());
-    std::copy(inner.begin(), inner.end(), S.innerIndexPtr());
-    std::copy(values.begin(), values.end(), S.valuePtr());
-    cache_->S = std::move(S);
+    cache_->S = internal::compressed_matrix(2 * nf, 2 * nf, outer, inner, values);
   }
   return *cache_->S;
 }

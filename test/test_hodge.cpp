@@ -50,15 +50,6 @@ void expect_valid_decomposition(const TVF::Hodge_solver& solver, const Eigen::Ve
     if(!im.is_boundary_edge(e)) EXPECT_LT(std::abs(curl[e]), 1e-9 * scale);
 }
 
-Eigen::VectorXd random_field(int nf, unsigned seed)
-{
-  std::mt19937 gen(seed);
-  std::normal_distribution<double> N;
-  Eigen::VectorXd v(2 * nf);
-  for(int i = 0; i < v.size(); ++i) v[i] = N(gen);
-  return v;
-}
-
 struct Case
 {
   std::string name;

@@ -243,4 +243,13 @@ std::vector<Vector_3> ambient_linear_field(const Mesh& mesh, unsigned seed)
   return out;
 }
 
+Eigen::VectorXd random_field(int number_of_faces, unsigned seed)
+{
+  std::mt19937 gen(seed);
+  std::normal_distribution<double> N;
+  Eigen::VectorXd v(2 * number_of_faces);
+  for(Eigen::Index i = 0; i < v.size(); ++i) v[i] = N(gen);
+  return v;
+}
+
 } // namespace tvf_test

@@ -9,6 +9,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <Eigen/Core>
+
 #include <cmath>
 #include <map>
 #include <random>
@@ -62,6 +64,9 @@ bool read_mesh(const std::string& path, Mesh& mesh);
 
 /// A smooth ambient field projected to the faces: a + B p at the face centroid.
 std::vector<Vector_3> ambient_linear_field(const Mesh& mesh, unsigned seed);
+
+/// A white-noise field in frame coordinates (`2 nf` standard normal entries).
+Eigen::VectorXd random_field(int number_of_faces, unsigned seed);
 
 } // namespace tvf_test
 

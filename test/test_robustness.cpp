@@ -68,15 +68,6 @@ double decomposition_defect(const TVF::Hodge_solver& solver, const Eigen::Vector
                    std::abs(dot(p.exact, p.harmonic)) / n2, std::abs(dot(p.coexact, p.harmonic)) / n2});
 }
 
-Eigen::VectorXd random_field(int nf, unsigned seed)
-{
-  std::mt19937 gen(seed);
-  std::normal_distribution<double> N;
-  Eigen::VectorXd v(2 * nf);
-  for(int i = 0; i < v.size(); ++i) v[i] = N(gen);
-  return v;
-}
-
 // A fan of triangles around vertex 0 with one triangle squeezed: vertex 2 moves
 // to a fraction `t` of the way from vertex 1 towards vertex 3 on a circle, making
 // needle (t small: short edge 1-2) or cap triangles.
