@@ -178,11 +178,23 @@ Eigenpairs lowest_eigenpairs(const Sparse_matrix& A, const Eigen::VectorXd& d, i
     const int j0 = m - b;
     Eigen::MatrixXd Z = op(Q.middleCols(j0, b));
     applications += b;
+    // Lanczos' local step first (the last two blocks hold nearly all of op(Q_j)),
+    // then one pass against the whole basis, and a second one only where a column
+    // lost more than half its norm in that pass ("twice is enough", Kahan-Parlett).
+    {
+      const int l0 = std::max(0, j0 - b);
+      const Eigen::MatrixXd C = Q.middleCols(l0, m - l0).transpose() * Z;
+      Z.noalias() -= Q.middleCols(l0, m - l0) * C;
+      H.block(l0, j0, m - l0, b) += C;
+    }
     for(int pass = 0; pass < 2; ++pass)
     {
+      const Eigen::VectorXd before = Z.colwise().norm();
       const Eigen::MatrixXd C = Q.leftCols(m).transpose() * Z;
       Z.noalias() -= Q.leftCols(m) * C;
       H.block(0, j0, m, b) += C;
+      const Eigen::VectorXd after = Z.colwise().norm();
+      if(((after.array() / before.array().max(1e-300)) > 0.5).all()) break;
     }
     p.deflate(Z);
     Eigen::HouseholderQR<Eigen::MatrixXd> qr(Z);
