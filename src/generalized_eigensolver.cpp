@@ -88,23 +88,21 @@ Eigenpairs dense_eigenpairs(const Problem& p, int count)
 {
   const Eigen::Index n = p.sqrt_d.size(), c = p.kernel.cols();
   Eigen::MatrixXd B = p.inv_sqrt_d.asDiagonal() * Eigen::MatrixXd(p.A) * p.inv_sqrt_d.asDiagonal();
-  // Restrict to the orthogonal complement of the kernel.
-  Eigen::MatrixXd basis(n, n - c);
+  // Restrict to the orthogonal complement of the kernel (when there is one).
+  Eigen::MatrixXd basis;
   if(c > 0)
   {
     Eigen::HouseholderQR<Eigen::MatrixXd> qr(p.kernel);
-    const Eigen::MatrixXd full_q = qr.householderQ();
-    basis = full_q.rightCols(n - c);
+    basis = Eigen::MatrixXd(qr.householderQ()).rightCols(n - c);
+    B = basis.transpose() * B * basis;
   }
-  else
-    basis.setIdentity();
-  Eigen::MatrixXd Bc = basis.transpose() * B * basis;
-  Bc = (Bc + Bc.transpose()).eval() / 2;
+  B = (B + B.transpose()).eval() / 2;
   Eigen::VectorXd values;
-  symmetric_eigen(Bc, values);
+  symmetric_eigen(B, values);
   Eigenpairs result;
   result.values = values.head(count);
-  result.vectors = p.inv_sqrt_d.asDiagonal() * (basis * Bc.leftCols(count));
+  const Eigen::MatrixXd Y = c > 0 ? Eigen::MatrixXd(basis * B.leftCols(count)) : Eigen::MatrixXd(B.leftCols(count));
+  result.vectors = p.inv_sqrt_d.asDiagonal() * Y;
   result.residuals = p.residuals(result.values, result.vectors);
   result.basis_size = static_cast<int>(n - c);
   return result;

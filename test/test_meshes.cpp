@@ -243,6 +243,14 @@ std::vector<Vector_3> ambient_linear_field(const Mesh& mesh, unsigned seed)
   return out;
 }
 
+Mesh::Property_map<Face_index, Vector_3> ambient_field_map(Mesh& mesh, const std::string& name, unsigned seed)
+{
+  auto map = mesh.add_property_map<Face_index, Vector_3>("f:" + name, Vector_3(0, 0, 0)).first;
+  const std::vector<Vector_3> values = ambient_linear_field(mesh, seed);
+  for(Face_index f : mesh.faces()) map[f] = values[std::size_t(f)];
+  return map;
+}
+
 Eigen::VectorXd random_field(int number_of_faces, unsigned seed)
 {
   std::mt19937 gen(seed);

@@ -64,6 +64,8 @@ bool read_mesh(const std::string& path, Mesh& mesh);
 
 /// A smooth ambient field projected to the faces: a + B p at the face centroid.
 std::vector<Vector_3> ambient_linear_field(const Mesh& mesh, unsigned seed);
+/// The same field stored in a new face property map `f:<name>`.
+Mesh::Property_map<Face_index, Vector_3> ambient_field_map(Mesh& mesh, const std::string& name, unsigned seed);
 
 /// A white-noise field in frame coordinates (`2 nf` standard normal entries).
 Eigen::VectorXd random_field(int number_of_faces, unsigned seed);

@@ -190,12 +190,9 @@ TEST(Degenerate, CollapsedEdgesAreRefusedByDefaultAndFiniteWithMollification)
 
 TEST(Degenerate, ZeroAreaFaceOfCollinearVertices)
 {
-  // A triangle whose three vertices are collinear (all edges non-zero).
+  // Triangle 0-1-2 with vertex 0 moved to the midpoint of edge 1-2: collinear
+  // vertices, all edges non-zero, area exactly zero.
   Mesh mesh = fan_with_squeezed_triangle(0.5);
-  // Put vertex 2 exactly on the segment 1-3 (already) and vertex 0 irrelevant: the
-  // squeezed triangle 0-1-2 is fine, so flatten triangle 1-2-3 instead by making
-  // 1, 2, 3 collinear: add a face (1, 3, 2)?  Simpler: collapse vertex 0 onto the
-  // segment between 1 and 2.
   mesh.point(Vertex_index(0)) = CGAL::midpoint(mesh.point(Vertex_index(1)), mesh.point(Vertex_index(2)));
   expect_defect(TVF::Mesh_defect::degenerate_face, [&] { TVF::Discrete_operators<Mesh> ops(mesh); });
   EXPECT_NO_THROW(TVF::Discrete_operators<Mesh> ops(mesh, TVF::parameters::use_intrinsic_mollification(true)));
