@@ -13,6 +13,7 @@
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <random>
 #include <sstream>
@@ -55,10 +56,10 @@ Eigen::MatrixXd orthonormal_columns(const Eigen::MatrixXd& X)
 struct Problem
 {
   const Sparse_matrix& A;
-  Eigen::VectorXd sqrt_d, inv_sqrt_d;
+  Eigen::VectorXd d, sqrt_d, inv_sqrt_d;
   Eigen::MatrixXd kernel; // orthonormal, standard form
 
-  Problem(const Sparse_matrix& A_, const Eigen::VectorXd& d, const Eigen::MatrixXd& kernel_original) : A(A_)
+  Problem(const Sparse_matrix& A_, const Eigen::VectorXd& d_, const Eigen::MatrixXd& kernel_original) : A(A_), d(d_)
   {
     sqrt_d = d.cwiseSqrt();
     inv_sqrt_d = sqrt_d.cwiseInverse();
@@ -73,7 +74,6 @@ struct Problem
   Eigen::VectorXd residuals(const Eigen::VectorXd& values, const Eigen::MatrixXd& X) const
   {
     const Eigen::MatrixXd AX = A * X;
-    const Eigen::VectorXd d = sqrt_d.cwiseProduct(sqrt_d);
     Eigen::VectorXd r(values.size());
     for(Eigen::Index i = 0; i < values.size(); ++i)
     {
@@ -108,26 +108,13 @@ Eigenpairs dense_eigenpairs(const Problem& p, int count)
   return result;
 }
 
-} // namespace
-
-Eigenpairs lowest_eigenpairs(const Sparse_matrix& A, const Eigen::VectorXd& d, int count, const Eigen::MatrixXd& kernel,
-                             const Eigensolver_options& options)
+// The `count` lowest pairs outside the kernel (dense for small problems, block
+// shift-and-invert Lanczos otherwise); no completeness check.
+Eigenpairs solve_lowest(const Sparse_matrix& A, const Problem& p, int count, const Eigensolver_options& options)
 {
   const int n = static_cast<int>(A.rows());
-  const int c = static_cast<int>(kernel.cols());
-  if(A.cols() != n || d.size() != n || (c > 0 && kernel.rows() != n))
-    throw Invalid_input("eigenproblem: matrix, masses and kernel sizes differ");
-  if(count < 0 || count > n - c)
-    throw Invalid_input("asked for " + std::to_string(count) + " eigenpairs but the space has dimension " +
-                        std::to_string(n - c));
-  if(!(d.minCoeff() > 0)) throw Invalid_input("eigenproblem: the masses must be positive");
-  Problem p(A, d, kernel);
-  if(count == 0)
-  {
-    Eigenpairs empty;
-    empty.vectors.resize(n, 0);
-    return empty;
-  }
+  const int c = static_cast<int>(p.kernel.cols());
+  const Eigen::VectorXd& d = p.d;
   const int b = std::max(1, options.block_size);
   if(options.allow_dense && (n <= 1500 || count + 3 * b > (n - c) / 3)) return dense_eigenpairs(p, count);
 
@@ -266,6 +253,107 @@ Eigenpairs lowest_eigenpairs(const Sparse_matrix& A, const Eigen::VectorXd& d, i
   result.basis_size = complete;
   result.operator_applications = applications;
   return result;
+}
+
+} // namespace
+
+Completeness_check check_completeness(const Sparse_matrix& A, const Eigen::VectorXd& d, const Eigen::VectorXd& values,
+                                      int kernel_dimension, int first_gap)
+{
+  const Eigen::Index m = values.size();
+  Completeness_check check;
+  if(m == 0)
+  {
+    check.shift = 0;
+    check.expected = check.inertia = 0;
+    return check;
+  }
+  // The shift goes in the widest gap (relative to the eigenvalue) among the last
+  // values, so that it is far from every eigenvalue and LDL^T without pivoting is
+  // stable; after the last value when there is no gap to choose from.
+  Eigen::Index below = m; // number of values below the shift
+  double best = -1;
+  for(Eigen::Index j = std::max<Eigen::Index>(first_gap < 0 ? m - 1 : first_gap, 1); j < m; ++j)
+  {
+    const double gap = (values[j] - values[j - 1]) / std::max(std::abs(values[j]), 1e-300);
+    if(gap > best)
+    {
+      best = gap;
+      below = j;
+    }
+  }
+  if(below == m || best <= 1e-8)
+  {
+    below = m;
+    check.shift = values[m - 1] * (1 + 1e-6) + 1e-12 * std::abs(values[0]);
+  }
+  else
+    check.shift = 0.5 * (values[below - 1] + values[below]);
+  check.expected = kernel_dimension + static_cast<int>(below);
+  check.inertia = count_eigenvalues_below(A, d, check.shift);
+  return check;
+}
+
+Eigenpairs lowest_eigenpairs(const Sparse_matrix& A, const Eigen::VectorXd& d, int count, const Eigen::MatrixXd& kernel,
+                             const Eigensolver_options& options)
+{
+  const int n = static_cast<int>(A.rows());
+  const int c = static_cast<int>(kernel.cols());
+  if(A.cols() != n || d.size() != n || (c > 0 && kernel.rows() != n))
+    throw Invalid_input("eigenproblem: matrix, masses and kernel sizes differ");
+  if(count < 0 || count > n - c)
+    throw Invalid_input("asked for " + std::to_string(count) + " eigenpairs but the space has dimension " +
+                        std::to_string(n - c));
+  if(n > 0 && !(d.minCoeff() > 0)) throw Invalid_input("eigenproblem: the masses must be positive");
+  const Problem p(A, d, kernel);
+  if(count == 0)
+  {
+    Eigenpairs empty;
+    empty.vectors.resize(n, 0);
+    empty.complete_below = n - c > 0 ? 0. : std::numeric_limits<double>::infinity();
+    return empty;
+  }
+  if(!options.verify_completeness || count == n - c)
+  {
+    Eigenpairs result = solve_lowest(A, p, count, options);
+    result.complete_below = count == n - c ? std::numeric_limits<double>::infinity() : result.values[count - 1];
+    return result;
+  }
+  // A margin of pairs beyond `count` gives the completeness check a gap to work in.
+  int extra = std::min(n - c - count, std::max(4, count / 16));
+  Eigensolver_options attempt = options;
+  for(int round = 0;; ++round)
+  {
+    Eigenpairs all = solve_lowest(A, p, count + extra, attempt);
+    const Completeness_check check = check_completeness(A, d, all.values, c, count);
+    if(check.passed())
+    {
+      Eigenpairs result;
+      result.values = all.values.head(count);
+      result.vectors = all.vectors.leftCols(count);
+      result.residuals = all.residuals.head(count);
+      result.basis_size = all.basis_size;
+      result.operator_applications = all.operator_applications;
+      result.completeness = check;
+      // Nothing was skipped below the shift: the first value not returned is the
+      // next computed one if it lies below the shift, and at least the shift otherwise.
+      const bool whole_space = count + extra == n - c;
+      result.complete_below = whole_space || check.expected - c > count ? all.values[count] : check.shift;
+      return result;
+    }
+    if(round == 1)
+    {
+      std::ostringstream msg;
+      msg << "the eigensolver missed eigenvalues: " << check.inertia << " eigenvalues lie below " << check.shift
+          << " but " << check.expected << " were found (kernel included); the problem may have multiplicities "
+          << "larger than the block size " << options.block_size;
+      throw Numerical_failure(msg.str());
+    }
+    // Retry with a wider margin, a larger block and a different start.
+    extra = std::min(n - c - count, extra + std::abs(check.inertia - check.expected) + options.block_size);
+    attempt.seed = options.seed + 0x9e3779b97f4a7c15ull;
+    attempt.block_size = 2 * options.block_size;
+  }
 }
 
 int count_eigenvalues_below(const Sparse_matrix& A, const Eigen::VectorXd& d, double tau)

@@ -40,6 +40,21 @@ struct Eigensolver_options
   bool allow_dense = true;
   /// Called after every Rayleigh-Ritz step.
   std::function<void(const Eigensolver_progress&)> progress;
+  /// Prove that no eigenvalue was skipped: a few pairs beyond `count` are computed,
+  /// a shift `tau` is placed in the widest gap among them, and the Sylvester inertia
+  /// of `A - tau D` must equal the number of computed eigenvalues below `tau`.  On a
+  /// mismatch the solve is repeated once with a larger margin and a new start, then
+  /// `Numerical_failure` is thrown.
+  bool verify_completeness = true;
+};
+
+/// Outcome of a completeness check (see `check_completeness`).
+struct Completeness_check
+{
+  double shift = 0;        ///< `tau`, placed in a gap of the checked spectrum
+  int expected = 0;        ///< kernel dimension + checked eigenvalues below `tau`
+  int inertia = 0;         ///< eigenvalues below `tau` by Sylvester's law of inertia
+  bool passed() const { return expected == inertia; }
 };
 
 /// Eigenpairs in ascending order; `vectors` are `D`-orthonormal.
@@ -50,6 +65,11 @@ struct Eigenpairs
   Eigen::VectorXd residuals;    ///< relative residual of each pair
   int basis_size = 0;           ///< Krylov vectors used
   int operator_applications = 0; ///< columns passed through the shift-invert solve
+  /// Every eigenvalue that was not returned is at least this (infinity when the whole
+  /// space was returned).  Established by the completeness check when it ran.
+  double complete_below = 0;
+  /// The inertia check behind `complete_below` (`shift == 0`, `inertia == 0` if it did not run).
+  Completeness_check completeness;
 };
 
 /// The `count` smallest eigenvalues of `A x = lambda D x` on the `D`-orthogonal
@@ -57,6 +77,13 @@ struct Eigenpairs
 /// \throws Numerical_failure if the iteration does not reach `tolerance`.
 Eigenpairs lowest_eigenpairs(const Eigen::SparseMatrix<double>& A, const Eigen::VectorXd& D, int count,
                              const Eigen::MatrixXd& kernel, const Eigensolver_options& options = {});
+
+/// Checks that `values` (ascending, computed eigenvalues of `A x = lambda D x` outside a
+/// kernel of dimension `kernel_dimension`, starting at the lowest) contain every
+/// eigenvalue below a shift placed in the widest relative gap among
+/// `values[first_gap ..]` (default: the last gap).
+Completeness_check check_completeness(const Eigen::SparseMatrix<double>& A, const Eigen::VectorXd& D,
+                                      const Eigen::VectorXd& values, int kernel_dimension, int first_gap = -1);
 
 /// Number of eigenvalues of `A x = lambda D x` below `tau` (Sylvester's law of inertia:
 /// the negative pivots of an `LDL^T` factorisation of `A - tau D`).

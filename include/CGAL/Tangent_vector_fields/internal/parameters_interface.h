@@ -19,3 +19,11 @@ TVF_add_named_parameter(degeneracy_tolerance_t, degeneracy_tolerance, degeneracy
 
 // Harmonic basis
 TVF_add_named_parameter(random_seed_t, random_seed, random_seed)
+
+// Spectral basis (what to compute, and how)
+TVF_add_named_parameter(number_of_eigenfields_t, number_of_eigenfields, number_of_eigenfields)
+TVF_add_named_parameter(number_of_exact_eigenfields_t, number_of_exact_eigenfields, number_of_exact_eigenfields)
+TVF_add_named_parameter(number_of_coexact_eigenfields_t, number_of_coexact_eigenfields, number_of_coexact_eigenfields)
+TVF_add_named_parameter(maximum_eigenvalue_t, maximum_eigenvalue, maximum_eigenvalue)
+TVF_add_named_parameter(eigensolver_tolerance_t, eigensolver_tolerance, eigensolver_tolerance)
+TVF_add_named_parameter(progress_callback_t, progress_callback, progress_callback)

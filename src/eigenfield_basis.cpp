@@ -1,0 +1,710 @@
+// Copyright (c) 2026 The Tangent_vector_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+// Dense products with the eigenfunctions go to the BLAS.
+#define EIGEN_USE_BLAS
+
+#include <CGAL/Tangent_vector_fields/Eigenfield_basis.h>
+#include <CGAL/Tangent_vector_fields/Generalized_eigensolver.h>
+#include <CGAL/Tangent_vector_fields/errors.h>
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+namespace CGAL {
+namespace Tangent_vector_fields {
+
+namespace {
+
+typedef Eigen::SparseMatrix<double> Sparse_matrix;
+
+double seconds_since(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// One of the two scalar eigenproblems, restricted to the unknowns that carry mass
+// and scaled to unit total mass (eigenvalues scale back by the area).
+struct Scalar_problem
+{
+  Sparse_matrix A;
+  Eigen::VectorXd d;
+  Eigen::MatrixXd kernel;
+  std::vector<int> unknowns; // positions in the full vector (empty: all)
+  Eigen::Index full_size = 0;
+  double area = 1;
+
+  int available() const { return static_cast<int>(A.rows() - kernel.cols()); }
+
+  Eigen::MatrixXd expand(const Eigen::MatrixXd& X) const
+  {
+    if(unknowns.empty()) return X;
+    Eigen::MatrixXd Y = Eigen::MatrixXd::Zero(full_size, X.cols());
+    for(std::size_t i = 0; i < unknowns.size(); ++i) Y.row(unknowns[i]) = X.row(static_cast<Eigen::Index>(i));
+    return Y;
+  }
+};
+
+// Exact problem: W phi = lambda M phi on the vertices in faces; the constants of
+// each component span the kernel.
+Scalar_problem exact_problem(const Operator_matrices& ops, double area)
+{
+  const Intrinsic_mesh& mesh = ops.mesh();
+  Scalar_problem p;
+  p.area = area;
+  p.full_size = mesh.number_of_vertices();
+  std::vector<int> position(mesh.number_of_vertices(), -1);
+  for(int v = 0; v < mesh.number_of_vertices(); ++v)
+    if(!mesh.is_isolated_vertex(v))
+    {
+      position[v] = static_cast<int>(p.unknowns.size());
+      p.unknowns.push_back(v);
+    }
+  const Eigen::Index n = static_cast<Eigen::Index>(p.unknowns.size());
+  if(n == mesh.number_of_vertices())
+  {
+    p.unknowns.clear();
+    p.A = ops.W();
+    p.d = ops.vertex_masses() / area;
+  }
+  else
+  {
+    std::vector<Eigen::Triplet<double>> entries;
+    const Sparse_matrix& W = ops.W();
+    for(int j = 0; j < W.outerSize(); ++j)
+      for(Sparse_matrix::InnerIterator it(W, j); it; ++it)
+        if(position[it.row()] >= 0 && position[j] >= 0) entries.emplace_back(position[it.row()], position[j], it.value());
+    p.A.resize(n, n);
+    p.A.setFromTriplets(entries.begin(), entries.end());
+    p.d.resize(n);
+    for(Eigen::Index i = 0; i < n; ++i) p.d[i] = ops.vertex_masses()[p.unknowns[i]] / area;
+  }
+  const int components = mesh.topology().number_of_components();
+  p.kernel = Eigen::MatrixXd::Zero(n, components);
+  for(Eigen::Index i = 0; i < n; ++i)
+    p.kernel(i, mesh.vertex_component(p.unknowns.empty() ? static_cast<int>(i) : p.unknowns[i])) = 1;
+  return p;
+}
+
+// Coexact problem: W* psi = mu M* psi on interior edges; a constant on each closed
+// component spans the kernel (components with boundary have zero boundary values).
+Scalar_problem coexact_problem(const Operator_matrices& ops, double area)
+{
+  const Intrinsic_mesh& mesh = ops.mesh();
+  Scalar_problem p;
+  p.area = area;
+  p.full_size = mesh.number_of_interior_edges();
+  p.A = ops.W_star();
+  p.d = ops.all_to_interior_edges(ops.edge_masses()) / area;
+  const Mesh_topology& topology = mesh.topology();
+  std::vector<int> kernel_column(topology.number_of_components(), -1);
+  int closed = 0;
+  for(int c = 0; c < topology.number_of_components(); ++c)
+    if(topology.components[c].is_closed()) kernel_column[c] = closed++;
+  p.kernel = Eigen::MatrixXd::Zero(p.full_size, closed);
+  for(int i = 0; i < mesh.number_of_interior_edges(); ++i)
+  {
+    const int column = kernel_column[mesh.edge_component(mesh.interior_edges()[i])];
+    if(column >= 0) p.kernel(i, column) = 1;
+  }
+  return p;
+}
+
+struct Solved
+{
+  Eigen::VectorXd values;    // of the mesh as given
+  Eigen::MatrixXd functions; // mass-orthonormal, full size
+  double max_residual = 0;
+  double complete_below = std::numeric_limits<double>::infinity(); // of the mesh as given
+  Completeness_check check;
+};
+
+Solved solve(const Scalar_problem& p, int count, const Basis_options& options, const std::string& stage,
+             double progress_start, double progress_span)
+{
+  Eigensolver_options eigen_options;
+  eigen_options.tolerance = options.tolerance;
+  eigen_options.block_size = options.block_size;
+  eigen_options.seed = options.seed;
+  if(options.progress)
+    eigen_options.progress = [&](const Eigensolver_progress& e) {
+      const double f = e.wanted > 0 ? std::min(1., double(e.converged) / e.wanted) : 1.;
+      options.progress({stage, progress_start + progress_span * f});
+    };
+  const Eigenpairs pairs = lowest_eigenpairs(p.A, p.d, count, p.kernel, eigen_options);
+  Solved s;
+  s.values = pairs.values / p.area;
+  s.functions = p.expand(pairs.vectors) / std::sqrt(p.area);
+  s.max_residual = pairs.residuals.size() ? pairs.residuals.maxCoeff() : 0.;
+  s.complete_below = pairs.complete_below / p.area;
+  s.check = pairs.completeness;
+  return s;
+}
+
+// Eigenvalues of A x = lambda D x (outside the kernel) below tau.
+int count_below(const Scalar_problem& p, double tau)
+{
+  if(p.available() == 0) return 0;
+  return count_eigenvalues_below(p.A, p.d, tau * p.area) - static_cast<int>(p.kernel.cols());
+}
+
+// FNV-1a, for the file fingerprint.
+struct Hasher
+{
+  std::uint64_t h = 1469598103934665603ull;
+  void add(const void* data, std::size_t bytes)
+  {
+    const unsigned char* c = static_cast<const unsigned char*>(data);
+    for(std::size_t i = 0; i < bytes; ++i)
+    {
+      h ^= c[i];
+      h *= 1099511628211ull;
+    }
+  }
+  template <class T>
+  void add(const T& value)
+  {
+    add(&value, sizeof(T));
+  }
+};
+
+const char file_magic[8] = {'T', 'V', 'F', 'B', 'A', 'S', 'I', 'S'};
+const std::uint32_t file_version = 1;
+const std::uint32_t byte_order_mark = 0x01020304u;
+
+// Geometry signature: total area and four pseudo-randomly weighted sums of the edge
+// lengths.  Equal to ~1e-12 relative only for the same intrinsic geometry.
+std::array<double, 5> geometry_signature(const Intrinsic_mesh& mesh)
+{
+  std::array<double, 5> s{};
+  for(int f = 0; f < mesh.number_of_faces(); ++f) s[0] += mesh.face_area(f);
+  std::uint64_t state = 0x243f6a8885a308d3ull;
+  for(int e = 0; e < mesh.number_of_edges(); ++e)
+    for(int k = 1; k < 5; ++k)
+    {
+      state = state * 6364136223846793005ull + 1442695040888963407ull;
+      const double weight = 0.5 + double(state >> 11) / double(1ull << 53);
+      s[k] += weight * mesh.edge_length(e);
+    }
+  return s;
+}
+
+template <class T>
+void write_value(std::ostream& out, const T& value)
+{
+  out.write(reinterpret_cast<const char*>(&value), sizeof(T));
+}
+
+void write_matrix(std::ostream& out, const Eigen::MatrixXd& M)
+{
+  write_value<std::int64_t>(out, M.rows());
+  write_value<std::int64_t>(out, M.cols());
+  out.write(reinterpret_cast<const char*>(M.data()), static_cast<std::streamsize>(sizeof(double) * M.size()));
+}
+
+class Reader
+{
+public:
+  Reader(std::istream& in, const std::string& path, std::uint64_t bytes) : in_(in), path_(path), left_(bytes) {}
+  template <class T>
+  T value()
+  {
+    T v;
+    read(&v, sizeof(T));
+    return v;
+  }
+  Eigen::MatrixXd matrix(Eigen::Index rows, Eigen::Index cols, const char* what)
+  {
+    const std::int64_t r = value<std::int64_t>(), c = value<std::int64_t>();
+    if((rows >= 0 && r != rows) || (cols >= 0 && c != cols) || r < 0 || c < 0)
+      fail(std::string("the ") + what + " have the wrong size");
+    if(static_cast<std::uint64_t>(r) * static_cast<std::uint64_t>(c) * sizeof(double) > left_)
+      fail("the file is truncated");
+    Eigen::MatrixXd M(r, c);
+    read(M.data(), sizeof(double) * M.size());
+    return M;
+  }
+  [[noreturn]] void fail(const std::string& why) const
+  {
+    throw Invalid_input("cannot load the spectral basis from '" + path_ + "': " + why);
+  }
+
+private:
+  void read(void* data, std::size_t bytes)
+  {
+    if(bytes > left_) fail("the file is truncated");
+    in_.read(static_cast<char*>(data), static_cast<std::streamsize>(bytes));
+    if(!in_) fail("read error");
+    left_ -= bytes;
+  }
+  std::istream& in_;
+  std::string path_;
+  std::uint64_t left_;
+};
+
+} // namespace
+
+Eigenfield_basis::Eigenfield_basis(std::shared_ptr<const Hodge_solver> solver) : solver_(std::move(solver))
+{
+  if(!solver_) throw Invalid_input("spectral basis: no Hodge solver given");
+}
+
+Eigenfield_basis::Eigenfield_basis(std::shared_ptr<const Hodge_solver> solver, const Basis_request& request,
+                                   const Basis_options& options)
+  : Eigenfield_basis(std::move(solver))
+{
+  const Operator_matrices& ops = operators();
+  const Intrinsic_mesh& mesh = ops.mesh();
+  const double area = ops.face_areas().sum();
+  const int harmonic_available = solver_->harmonic_dimension();
+  auto progress = [&](const std::string& stage, double fraction) {
+    if(options.progress) options.progress({stage, fraction});
+  };
+
+  const Scalar_problem exact = exact_problem(ops, area);
+  const Scalar_problem coexact = coexact_problem(ops, area);
+  const int exact_available = exact.available(), coexact_available = coexact.available();
+  const int space = harmonic_available + exact_available + coexact_available; // = 2 nf
+
+  // How many eigenpairs of each type to compute, and how many elements to keep.
+  int exact_count = 0, coexact_count = 0, harmonic_count = harmonic_available, keep = 0;
+  switch(request.mode)
+  {
+  case Basis_request::Mode::lowest:
+  {
+    if(request.count < 0 || request.count > space)
+      throw Invalid_input("asked for " + std::to_string(request.count) + " eigenfields but the space of fields has dimension " +
+                          std::to_string(space) + " (2 per face)");
+    keep = request.count;
+    harmonic_count = std::min(harmonic_available, keep);
+    const int rest = keep - harmonic_count;
+    // Weyl's law: below a frequency the two types are about equally many; a margin
+    // absorbs the difference (more exact ones along boundaries).
+    const int margin = rest > 0 ? std::max(8, rest / 16) : 0;
+    exact_count = std::min(exact_available, (rest + 1) / 2 + margin);
+    coexact_count = std::min(coexact_available, (rest + 1) / 2 + margin);
+    if(exact_count + coexact_count < rest)
+    {
+      exact_count = std::min(exact_available, rest - coexact_count);
+      coexact_count = std::min(coexact_available, rest - exact_count);
+    }
+    break;
+  }
+  case Basis_request::Mode::per_type:
+    if(request.exact_count < 0 || request.exact_count > exact_available || request.coexact_count < 0 ||
+       request.coexact_count > coexact_available)
+      throw Invalid_input("asked for " + std::to_string(request.exact_count) + " exact and " +
+                          std::to_string(request.coexact_count) + " coexact eigenfields; the mesh has " +
+                          std::to_string(exact_available) + " and " + std::to_string(coexact_available));
+    exact_count = request.exact_count;
+    coexact_count = request.coexact_count;
+    keep = harmonic_count + exact_count + coexact_count;
+    break;
+  case Basis_request::Mode::below_eigenvalue:
+  {
+    if(!(request.max_eigenvalue >= 0) || !std::isfinite(request.max_eigenvalue))
+      throw Invalid_input("the largest eigenvalue of the basis must be finite and non-negative");
+    // Sylvester's inertia gives the exact counts (a hair above the bound, so that an
+    // eigenvalue equal to it counts).
+    progress("counting eigenvalues", 0);
+    const double tau = request.max_eigenvalue * (1 + 1e-12);
+    exact_count = request.max_eigenvalue > 0 ? count_below(exact, tau) : 0;
+    coexact_count = request.max_eigenvalue > 0 ? count_below(coexact, tau) : 0;
+    keep = harmonic_count + exact_count + coexact_count;
+    break;
+  }
+  }
+
+  // Solve both problems; in `lowest` mode enlarge one whose margin turned out too small.
+  Solved exact_solved, coexact_solved;
+  int exact_done = -1, coexact_done = -1;
+  const double exact_share = double(exact_count) / std::max(1, exact_count + coexact_count);
+  for(int round = 0;; ++round)
+  {
+    if(exact_count != exact_done)
+    {
+      const auto start = std::chrono::steady_clock::now();
+      exact_solved = solve(exact, exact_count, options, "exact eigenfunctions", 0, 0.95 * exact_share);
+      exact_done = exact_count;
+      report_.exact_seconds += seconds_since(start);
+    }
+    if(coexact_count != coexact_done)
+    {
+      const auto start = std::chrono::steady_clock::now();
+      coexact_solved = solve(coexact, coexact_count, options, "coexact eigenfunctions", 0.95 * exact_share,
+                             0.95 * (1 - exact_share));
+      coexact_done = coexact_count;
+      report_.coexact_seconds += seconds_since(start);
+    }
+    if(request.mode != Basis_request::Mode::lowest) break;
+    // The `rest` lowest of the union are right if no uncomputed eigenvalue of either
+    // type lies below the largest one kept.
+    const int rest = keep - harmonic_count;
+    std::vector<double> merged(exact_solved.values.data(), exact_solved.values.data() + exact_count);
+    merged.insert(merged.end(), coexact_solved.values.data(), coexact_solved.values.data() + coexact_count);
+    std::sort(merged.begin(), merged.end());
+    const double largest_kept = rest > 0 ? merged[rest - 1] : 0;
+    const bool exact_enough = exact_count == exact_available || largest_kept <= exact_solved.complete_below;
+    const bool coexact_enough = coexact_count == coexact_available || largest_kept <= coexact_solved.complete_below;
+    if(exact_enough && coexact_enough) break;
+    if(round == 3) throw Numerical_failure("spectral basis: could not merge the exact and coexact spectra");
+    const int more = std::max(16, rest / 8);
+    if(!exact_enough) exact_count = std::min(exact_available, exact_count + more);
+    if(!coexact_enough) coexact_count = std::min(coexact_available, coexact_count + more);
+  }
+
+  if(request.mode == Basis_request::Mode::below_eigenvalue)
+  {
+    const double bound = request.max_eigenvalue * (1 + 1e-9);
+    if((exact_count > 0 && exact_solved.values.maxCoeff() > bound) ||
+       (coexact_count > 0 && coexact_solved.values.maxCoeff() > bound))
+      throw Numerical_failure("spectral basis: the eigensolver returned an eigenvalue above the requested bound "
+                              "although the inertia count says there are enough below it");
+  }
+
+  exact_values_ = exact_solved.values;
+  exact_functions_ = std::move(exact_solved.functions);
+  coexact_values_ = coexact_solved.values;
+  coexact_functions_ = std::move(coexact_solved.functions);
+  report_.max_residual = std::max(exact_solved.max_residual, coexact_solved.max_residual);
+  report_.exact_complete_below = exact_solved.complete_below;
+  report_.coexact_complete_below = coexact_solved.complete_below;
+  report_.exact_inertia = exact_solved.check.inertia;
+  report_.exact_expected = exact_solved.check.expected;
+  report_.coexact_inertia = coexact_solved.check.inertia;
+  report_.coexact_expected = coexact_solved.check.expected;
+
+  if(harmonic_count > 0)
+  {
+    progress("harmonic fields", 0.95);
+    const auto start = std::chrono::steady_clock::now();
+    harmonic_ = solver_->harmonic_basis(options.seed).leftCols(harmonic_count);
+    report_.harmonic_seconds = seconds_since(start);
+  }
+  else
+    harmonic_.resize(2 * static_cast<Eigen::Index>(mesh.number_of_faces()), 0);
+  merge(keep);
+  // Drop the eigenpairs computed only as a margin.
+  int exact_used = 0, coexact_used = 0;
+  for(const Element& e : order_)
+  {
+    if(e.type == Eigenfield_type::exact) exact_used = std::max(exact_used, e.index + 1);
+    if(e.type == Eigenfield_type::coexact) coexact_used = std::max(coexact_used, e.index + 1);
+  }
+  if(exact_used < number_of_exact())
+  {
+    report_.exact_complete_below = exact_values_[exact_used];
+    exact_values_.conservativeResize(exact_used);
+    exact_functions_.conservativeResize(Eigen::NoChange, exact_used);
+  }
+  if(coexact_used < number_of_coexact())
+  {
+    report_.coexact_complete_below = coexact_values_[coexact_used];
+    coexact_values_.conservativeResize(coexact_used);
+    coexact_functions_.conservativeResize(Eigen::NoChange, coexact_used);
+  }
+  progress("done", 1);
+}
+
+void Eigenfield_basis::merge(int count)
+{
+  order_.clear();
+  for(int i = 0; i < number_of_harmonic() && static_cast<int>(order_.size()) < count; ++i)
+    order_.push_back({Eigenfield_type::harmonic, i});
+  int i = 0, j = 0;
+  while(static_cast<int>(order_.size()) < count && (i < number_of_exact() || j < number_of_coexact()))
+  {
+    const bool take_exact = j >= number_of_coexact() || (i < number_of_exact() && exact_values_[i] <= coexact_values_[j]);
+    if(take_exact) order_.push_back({Eigenfield_type::exact, i++});
+    else order_.push_back({Eigenfield_type::coexact, j++});
+  }
+  update_values();
+}
+
+void Eigenfield_basis::update_values()
+{
+  values_.resize(size());
+  for(int k = 0; k < size(); ++k)
+  {
+    const Element& e = order_[k];
+    values_[k] = e.type == Eigenfield_type::exact     ? exact_values_[e.index]
+                 : e.type == Eigenfield_type::coexact ? coexact_values_[e.index]
+                                                      : 0.;
+  }
+}
+
+Eigenfield_basis::Vector Eigenfield_basis::eigenfield(int k) const
+{
+  if(k < 0 || k >= size())
+    throw Invalid_input("eigenfield index " + std::to_string(k) + " outside [0, " + std::to_string(size()) + ")");
+  Vector a = Vector::Zero(k + 1);
+  a[k] = 1;
+  return field(a);
+}
+
+Eigenfield_basis::Matrix Eigenfield_basis::coefficients(const Matrix& fields) const
+{
+  const Operator_matrices& ops = operators();
+  if(fields.rows() != ops.field_masses().size())
+    throw Invalid_input("a field has " + std::to_string(fields.rows()) + " frame coordinates, expected " +
+                        std::to_string(ops.field_masses().size()));
+  if(!fields.allFinite()) throw Invalid_input("the field has non-finite entries");
+  const Matrix weighted = ops.field_masses().asDiagonal() * fields; // MX v
+  Matrix a(size(), fields.cols());
+  if(number_of_exact() > 0)
+  {
+    const Matrix Ae = (exact_functions_.transpose() * (ops.G().transpose() * weighted)).eval();
+    for(int k = 0; k < size(); ++k)
+      if(order_[k].type == Eigenfield_type::exact)
+        a.row(k) = Ae.row(order_[k].index) / std::sqrt(exact_values_[order_[k].index]);
+  }
+  if(number_of_coexact() > 0)
+  {
+    // <v, J G* psi>_MX = psi^T G*^T J^T MX v = -psi^T G*^T (J MX v)
+    Matrix rotated(weighted.rows(), weighted.cols());
+    for(Eigen::Index c = 0; c < weighted.cols(); ++c) rotated.col(c) = ops.rotate(weighted.col(c));
+    const Matrix Ac = -(coexact_functions_.transpose() * (ops.G_star_interior().transpose() * rotated)).eval();
+    for(int k = 0; k < size(); ++k)
+      if(order_[k].type == Eigenfield_type::coexact)
+        a.row(k) = Ac.row(order_[k].index) / std::sqrt(coexact_values_[order_[k].index]);
+  }
+  if(number_of_harmonic() > 0)
+  {
+    const Matrix Ah = harmonic_.transpose() * weighted;
+    for(int k = 0; k < size(); ++k)
+      if(order_[k].type == Eigenfield_type::harmonic) a.row(k) = Ah.row(order_[k].index);
+  }
+  return a;
+}
+
+Eigenfield_basis::Vector Eigenfield_basis::coefficients(const Vector& field) const
+{
+  return coefficients(Matrix(field)).col(0);
+}
+
+Eigenfield_basis::Vector Eigenfield_basis::field(const Vector& a) const
+{
+  return decompress({a, 0, 0, {}}).col(0);
+}
+
+Eigenfield_basis::Matrix Eigenfield_basis::decompress(const Compressed_fields& compressed) const
+{
+  const Matrix& a = compressed.coefficients;
+  if(a.rows() > size())
+    throw Invalid_input(std::to_string(a.rows()) + " coefficients for a basis of " + std::to_string(size()) + " elements");
+  if(!a.allFinite()) throw Invalid_input("the coefficients have non-finite entries");
+  const Operator_matrices& ops = operators();
+  // Gather the coefficients per type, scaled to eigenfunction coefficients.
+  Matrix ce = Matrix::Zero(number_of_exact(), a.cols()), cc = Matrix::Zero(number_of_coexact(), a.cols()),
+         ch = Matrix::Zero(number_of_harmonic(), a.cols());
+  bool any_exact = false, any_coexact = false, any_harmonic = false;
+  for(Eigen::Index k = 0; k < a.rows(); ++k)
+  {
+    const Element& e = order_[k];
+    switch(e.type)
+    {
+    case Eigenfield_type::exact:
+      ce.row(e.index) = a.row(k) / std::sqrt(exact_values_[e.index]);
+      any_exact = true;
+      break;
+    case Eigenfield_type::coexact:
+      cc.row(e.index) = a.row(k) / std::sqrt(coexact_values_[e.index]);
+      any_coexact = true;
+      break;
+    case Eigenfield_type::harmonic:
+      ch.row(e.index) = a.row(k);
+      any_harmonic = true;
+      break;
+    }
+  }
+  Matrix v = Matrix::Zero(ops.field_masses().size(), a.cols());
+  if(any_exact) v += ops.G() * (exact_functions_ * ce).eval();
+  if(any_coexact)
+  {
+    const Matrix g = ops.G_star_interior() * (coexact_functions_ * cc).eval();
+    for(Eigen::Index c = 0; c < g.cols(); ++c) v.col(c) += ops.rotate(g.col(c));
+  }
+  if(any_harmonic) v += harmonic_ * ch;
+  return v;
+}
+
+Eigenfield_basis::Vector Eigenfield_basis::rest(const Vector& v) const { return v - field(coefficients(v)); }
+
+double Eigenfield_basis::dirichlet_energy(const Vector& a) const
+{
+  const Eigen::Index n = std::min<Eigen::Index>(a.size(), size());
+  return (values_.head(n).array() * a.head(n).array().square()).sum();
+}
+
+double Eigenfield_basis::biharmonic_energy(const Vector& a) const
+{
+  const Eigen::Index n = std::min<Eigen::Index>(a.size(), size());
+  return (values_.head(n).array().square() * a.head(n).array().square()).sum();
+}
+
+Eigenfield_basis::Matrix Eigenfield_basis::band_energies(const Vector& a, const std::vector<double>& edges) const
+{
+  const int bands = edges.size() < 2 ? 0 : static_cast<int>(edges.size()) - 1;
+  Matrix energy = Matrix::Zero(bands, 3);
+  for(Eigen::Index k = 0; k < std::min<Eigen::Index>(a.size(), size()); ++k)
+    for(int b = 0; b < bands; ++b)
+      if(values_[k] >= edges[b] && values_[k] < edges[b + 1])
+      {
+        energy(b, static_cast<int>(order_[k].type)) += a[k] * a[k];
+        break;
+      }
+  return energy;
+}
+
+Eigenfield_basis::Vector Eigenfield_basis::filter(const Vector& v, const Spectral_filter& f) const
+{
+  const Vector a = coefficients(v);
+  Vector b = a;
+  for(int k = 0; k < size(); ++k)
+  {
+    const double omega = std::sqrt(values_[k]);
+    switch(order_[k].type)
+    {
+    case Eigenfield_type::exact: b[k] *= f.exact(omega); break;
+    case Eigenfield_type::coexact: b[k] *= f.coexact(omega); break;
+    case Eigenfield_type::harmonic: b[k] *= f.harmonic_factor; break;
+    }
+  }
+  if(!b.allFinite()) throw Invalid_input("the filter's transfer function returned a non-finite value");
+  Vector result = field(b);
+  if(f.rest_factor != 0) result += f.rest_factor * (v - field(a));
+  return result;
+}
+
+Compressed_fields Eigenfield_basis::compress(const Matrix& fields, int k) const
+{
+  if(k < 0 || k > size())
+    throw Invalid_input("cannot keep " + std::to_string(k) + " coefficients of a basis of " + std::to_string(size()));
+  Compressed_fields c;
+  c.coefficients = coefficients(fields).topRows(k);
+  const Eigen::Index nf = operators().mesh().number_of_faces();
+  c.ratio = k > 0 ? 2. * nf / k : std::numeric_limits<double>::infinity();
+  c.bits_per_face = 64. * k / nf;
+  const Matrix error = fields - decompress(c);
+  const Vector& mass = operators().field_masses();
+  c.relative_errors.resize(fields.cols());
+  for(Eigen::Index j = 0; j < fields.cols(); ++j)
+  {
+    const double norm = std::sqrt(fields.col(j).cwiseAbs2().dot(mass));
+    c.relative_errors[j] = norm > 0 ? std::sqrt(error.col(j).cwiseAbs2().dot(mass)) / norm : 0.;
+  }
+  return c;
+}
+
+std::uint64_t Eigenfield_basis::mesh_fingerprint() const
+{
+  const Intrinsic_mesh& mesh = operators().mesh();
+  Hasher h;
+  h.add(mesh.number_of_vertices());
+  h.add(mesh.number_of_edges());
+  h.add(mesh.number_of_faces());
+  for(int f = 0; f < mesh.number_of_faces(); ++f)
+  {
+    h.add(mesh.face_vertices(f));
+    h.add(mesh.face_edges(f));
+  }
+  return h.h;
+}
+
+void Eigenfield_basis::save(const std::string& path) const
+{
+  std::ofstream out(path, std::ios::binary);
+  if(!out) throw Invalid_input("cannot write the spectral basis to '" + path + "'");
+  const Intrinsic_mesh& mesh = operators().mesh();
+  out.write(file_magic, sizeof(file_magic));
+  write_value(out, file_version);
+  write_value(out, byte_order_mark);
+  write_value(out, mesh_fingerprint());
+  for(double s : geometry_signature(mesh)) write_value(out, s);
+  write_matrix(out, exact_values_);
+  write_matrix(out, exact_functions_);
+  write_matrix(out, coexact_values_);
+  write_matrix(out, coexact_functions_);
+  write_matrix(out, harmonic_);
+  write_value<std::int64_t>(out, size());
+  for(const Element& e : order_)
+  {
+    write_value<std::uint8_t>(out, static_cast<std::uint8_t>(e.type));
+    write_value<std::int32_t>(out, e.index);
+  }
+  const Basis_report& r = report_;
+  for(double x : {r.max_residual, r.exact_complete_below, r.coexact_complete_below, r.exact_seconds,
+                  r.coexact_seconds, r.harmonic_seconds})
+    write_value(out, x);
+  for(int x : {r.exact_inertia, r.exact_expected, r.coexact_inertia, r.coexact_expected})
+    write_value<std::int32_t>(out, x);
+  write_value(out, file_magic);
+  if(!out) throw Invalid_input("writing the spectral basis to '" + path + "' failed");
+}
+
+Eigenfield_basis Eigenfield_basis::load(std::shared_ptr<const Hodge_solver> solver, const std::string& path)
+{
+  Eigenfield_basis basis(std::move(solver));
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if(!in) throw Invalid_input("cannot open the spectral basis file '" + path + "'");
+  const std::uint64_t bytes = static_cast<std::uint64_t>(in.tellg());
+  in.seekg(0);
+  Reader r(in, path, bytes);
+  char magic[8];
+  for(char& c : magic) c = r.value<char>();
+  if(std::memcmp(magic, file_magic, sizeof(magic)) != 0) r.fail("not a spectral basis file");
+  const std::uint32_t version = r.value<std::uint32_t>();
+  if(version != file_version)
+    r.fail("file format version " + std::to_string(version) + ", this library reads version " +
+           std::to_string(file_version));
+  if(r.value<std::uint32_t>() != byte_order_mark) r.fail("written on a machine of another byte order");
+  const Intrinsic_mesh& mesh = basis.operators().mesh();
+  if(r.value<std::uint64_t>() != basis.mesh_fingerprint())
+    r.fail("it belongs to a mesh with other connectivity");
+  const std::array<double, 5> signature = geometry_signature(mesh);
+  for(double s : signature)
+  {
+    const double stored = r.value<double>();
+    if(!(std::abs(stored - s) <= 1e-9 * std::abs(s))) r.fail("it belongs to a mesh with other edge lengths");
+  }
+  const Eigen::Index nv = mesh.number_of_vertices(), ne = mesh.number_of_interior_edges(), nf = mesh.number_of_faces();
+  basis.exact_values_ = r.matrix(-1, 1, "exact eigenvalues");
+  basis.exact_functions_ = r.matrix(nv, basis.exact_values_.size(), "exact eigenfunctions");
+  basis.coexact_values_ = r.matrix(-1, 1, "coexact eigenvalues");
+  basis.coexact_functions_ = r.matrix(ne, basis.coexact_values_.size(), "coexact eigenfunctions");
+  basis.harmonic_ = r.matrix(2 * nf, -1, "harmonic fields");
+  const std::int64_t count = r.value<std::int64_t>();
+  if(count < 0 || count > basis.number_of_harmonic() + basis.number_of_exact() + basis.number_of_coexact())
+    r.fail("inconsistent element count");
+  for(std::int64_t k = 0; k < count; ++k)
+  {
+    const std::uint8_t type = r.value<std::uint8_t>();
+    const std::int32_t index = r.value<std::int32_t>();
+    const int available = type == 0 ? basis.number_of_harmonic() : type == 1 ? basis.number_of_exact()
+                        : type == 2 ? basis.number_of_coexact() : -1;
+    if(index < 0 || index >= available) r.fail("inconsistent element table");
+    basis.order_.push_back({static_cast<Eigenfield_type>(type), index});
+  }
+  Basis_report& rep = basis.report_;
+  for(double* x : {&rep.max_residual, &rep.exact_complete_below, &rep.coexact_complete_below, &rep.exact_seconds,
+                   &rep.coexact_seconds, &rep.harmonic_seconds})
+    *x = r.value<double>();
+  for(int* x : {&rep.exact_inertia, &rep.exact_expected, &rep.coexact_inertia, &rep.coexact_expected})
+    *x = r.value<std::int32_t>();
+  for(char& c : magic) c = r.value<char>();
+  if(std::memcmp(magic, file_magic, sizeof(magic)) != 0) r.fail("the file is corrupt (no end marker)");
+  basis.update_values();
+  if(!basis.values_.allFinite() || !basis.exact_functions_.allFinite() || !basis.coexact_functions_.allFinite() ||
+     !basis.harmonic_.allFinite())
+    r.fail("the file holds non-finite numbers");
+  return basis;
+}
+
+} // namespace Tangent_vector_fields
+} // namespace CGAL
