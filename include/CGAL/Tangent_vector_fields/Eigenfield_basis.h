@@ -77,8 +77,8 @@ struct Basis_options
 {
   /// Relative residual required of every eigenpair (on the unit-area problem).
   double tolerance = 1e-10;
-  /// Vectors per Lanczos block.
-  int block_size = 16;
+  /// Vectors per Lanczos block (see `Eigensolver_options::block_size`).
+  int block_size = 4;
   std::uint64_t seed = 1;
   std::function<void(const Spectral_progress&)> progress;
 };

@@ -1,0 +1,52 @@
+// Copyright (c) 2026 The Tangent_vector_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TANGENT_VECTOR_FIELDS_SPARSE_LDLT_SOLVER_H
+#define CGAL_TANGENT_VECTOR_FIELDS_SPARSE_LDLT_SOLVER_H
+
+/// \file Sparse_ldlt_solver.h
+/// `LDL^T` factorisation of sparse symmetric, possibly indefinite matrices with
+/// one sparsity pattern (shifted matrices `A - sigma D`), giving the inertia:
+/// CHOLMOD's simplicial `LDL^T` when built with SuiteSparse, Eigen's
+/// `SimplicialLDLT` otherwise.  No pivoting: meant for shifts placed away from
+/// eigenvalues, where the pivots stay well away from zero.
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include <memory>
+#include <string>
+
+namespace CGAL {
+namespace Tangent_vector_fields {
+
+class Sparse_ldlt_solver
+{
+public:
+  Sparse_ldlt_solver();
+  ~Sparse_ldlt_solver();
+  Sparse_ldlt_solver(const Sparse_ldlt_solver&) = delete;
+  Sparse_ldlt_solver& operator=(const Sparse_ldlt_solver&) = delete;
+
+  /// Orders and analyses the pattern of `A` (lower triangle); later `factor` calls
+  /// must use matrices with this pattern.
+  void analyze(const Eigen::SparseMatrix<double>& A);
+  /// Factors `A` (analysing it first if `analyze` was not called).
+  /// \throws Numerical_failure on a zero or non-finite pivot.
+  void factor(const Eigen::SparseMatrix<double>& A, const std::string& what);
+  /// Number of negative pivots of the last factorisation: by Sylvester's law, the
+  /// number of negative eigenvalues of the matrix.
+  int negative_pivots() const;
+  /// Smallest pivot magnitude relative to the largest (how close to singular).
+  double smallest_relative_pivot() const;
+  Eigen::MatrixXd solve(const Eigen::MatrixXd& B) const;
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+} // namespace Tangent_vector_fields
+} // namespace CGAL
+
+#endif

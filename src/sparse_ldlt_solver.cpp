@@ -1,0 +1,123 @@
+// Copyright (c) 2026 The Tangent_vector_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#include <CGAL/Tangent_vector_fields/Sparse_ldlt_solver.h>
+#include <CGAL/Tangent_vector_fields/errors.h>
+
+#ifdef TVF_HAS_CHOLMOD
+#include <Eigen/CholmodSupport>
+#else
+#include <Eigen/SparseCholesky>
+#endif
+
+#include <cmath>
+
+namespace CGAL {
+namespace Tangent_vector_fields {
+
+#ifdef TVF_HAS_CHOLMOD
+
+// CHOLMOD simplicial LDL^T: on mesh Laplacians it factors as fast as the supernodal
+// LL^T and solves blocks of 16 columns faster (measured to 519k unknowns), and it
+// accepts indefinite matrices.  The analysis (AMD) is shared by all shifts.
+struct Sparse_ldlt_solver::Impl
+{
+  cholmod_common common;
+  cholmod_factor* factor = nullptr;
+  Eigen::VectorXd pivots;
+  Impl()
+  {
+    cholmod_start(&common);
+    common.supernodal = CHOLMOD_SIMPLICIAL;
+    common.final_ll = 0;
+    common.nmethods = 1;
+    common.method[0].ordering = CHOLMOD_AMD;
+    common.print = 0;
+  }
+  ~Impl()
+  {
+    if(factor) cholmod_free_factor(&factor, &common);
+    cholmod_finish(&common);
+  }
+};
+
+Sparse_ldlt_solver::Sparse_ldlt_solver() : impl_(new Impl) {}
+Sparse_ldlt_solver::~Sparse_ldlt_solver() = default;
+
+void Sparse_ldlt_solver::analyze(const Eigen::SparseMatrix<double>& A)
+{
+  if(impl_->factor) cholmod_free_factor(&impl_->factor, &impl_->common);
+  cholmod_sparse view = Eigen::viewAsCholmod(A.selfadjointView<Eigen::Lower>());
+  impl_->factor = cholmod_analyze(&view, &impl_->common);
+  if(!impl_->factor || impl_->common.status < CHOLMOD_OK) throw Numerical_failure("LDL^T analysis failed (CHOLMOD)");
+}
+
+void Sparse_ldlt_solver::factor(const Eigen::SparseMatrix<double>& A, const std::string& what)
+{
+  if(!impl_->factor) analyze(A);
+  cholmod_sparse view = Eigen::viewAsCholmod(A.selfadjointView<Eigen::Lower>());
+  cholmod_factorize(&view, impl_->factor, &impl_->common);
+  cholmod_factor* L = impl_->factor;
+  if(impl_->common.status < CHOLMOD_OK || L->minor < L->n || L->is_ll || L->is_super)
+    throw Numerical_failure("LDL^T factorisation of " + what + " failed (CHOLMOD status " +
+                            std::to_string(impl_->common.status) + ")");
+  const int* p = static_cast<const int*>(L->p);
+  const double* x = static_cast<const double*>(L->x);
+  impl_->pivots.resize(static_cast<Eigen::Index>(L->n));
+  for(std::size_t j = 0; j < L->n; ++j) impl_->pivots[static_cast<Eigen::Index>(j)] = x[p[j]];
+  if(!impl_->pivots.allFinite() || (impl_->pivots.array() == 0).any())
+    throw Numerical_failure("LDL^T factorisation of " + what + ": zero or non-finite pivot");
+}
+
+Eigen::MatrixXd Sparse_ldlt_solver::solve(const Eigen::MatrixXd& B) const
+{
+  Eigen::MatrixXd input = B;
+  cholmod_dense b = Eigen::viewAsCholmod(input);
+  cholmod_dense* x = cholmod_solve(CHOLMOD_A, impl_->factor, &b, &impl_->common);
+  if(!x) throw Numerical_failure("LDL^T solve failed (CHOLMOD)");
+  Eigen::MatrixXd result = Eigen::Map<Eigen::MatrixXd>(static_cast<double*>(x->x), B.rows(), B.cols());
+  cholmod_free_dense(&x, &impl_->common);
+  return result;
+}
+
+#else
+
+struct Sparse_ldlt_solver::Impl
+{
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt;
+  bool analyzed = false;
+  Eigen::VectorXd pivots;
+};
+
+Sparse_ldlt_solver::Sparse_ldlt_solver() : impl_(new Impl) {}
+Sparse_ldlt_solver::~Sparse_ldlt_solver() = default;
+
+void Sparse_ldlt_solver::analyze(const Eigen::SparseMatrix<double>& A)
+{
+  impl_->ldlt.analyzePattern(A);
+  impl_->analyzed = true;
+}
+
+void Sparse_ldlt_solver::factor(const Eigen::SparseMatrix<double>& A, const std::string& what)
+{
+  if(!impl_->analyzed) analyze(A);
+  impl_->ldlt.factorize(A);
+  impl_->pivots = impl_->ldlt.vectorD();
+  if(impl_->ldlt.info() != Eigen::Success || !impl_->pivots.allFinite() || (impl_->pivots.array() == 0).any())
+    throw Numerical_failure("LDL^T factorisation of " + what + " failed: zero or non-finite pivot");
+}
+
+Eigen::MatrixXd Sparse_ldlt_solver::solve(const Eigen::MatrixXd& B) const { return impl_->ldlt.solve(B); }
+
+#endif
+
+int Sparse_ldlt_solver::negative_pivots() const { return static_cast<int>((impl_->pivots.array() < 0).count()); }
+
+double Sparse_ldlt_solver::smallest_relative_pivot() const
+{
+  const Eigen::ArrayXd a = impl_->pivots.array().abs();
+  return a.size() ? a.minCoeff() / a.maxCoeff() : 1.;
+}
+
+} // namespace Tangent_vector_fields
+} // namespace CGAL
