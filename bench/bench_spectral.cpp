@@ -143,8 +143,9 @@ int main(int argc, char** argv)
                                        {"armadillo", "armadillo.obj", 1, 1246, 120}};
 
   std::printf("Spectral basis benchmark: %d exact + %d coexact eigenfields (+ harmonic), one run each, seconds.\n"
-              "set-up = operators + both eigenproblems + harmonic fields; residual = largest |A x - l D x| / (l |D x|);\n"
-              "complete = inertia/expected for the exact and the coexact problem (Sylvester check at a shift in a gap)\n\n",
+              "set-up = operators + both eigenproblems + harmonic fields; residual = largest\n"
+              "|D^-1/2 (A x - l D x)| / (l |D^1/2 x|); complete = inertia/expected of the exact and the coexact\n"
+              "problem at the last window boundary (Sylvester: eigenvalues below it / pairs found + kernel)\n\n",
               exact, coexact);
   std::printf("%-10s %8s %4s | %7s %7s %7s %7s %8s | %7s %7s %7s | %9s %s\n", "mesh", "faces", "dimH", "ops",
               "exact", "coexact", "harm.", "set-up", "thesis", "target", "speedup", "residual", "complete");

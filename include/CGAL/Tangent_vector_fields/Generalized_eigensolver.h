@@ -42,7 +42,9 @@ struct Eigensolver_options
   /// `|D^-1/2 (A x - l D x)| / (l |D^1/2 x|)`.  This is the residual of the symmetric
   /// standard form `D^-1/2 A D^-1/2`, so it bounds the relative error of the
   /// eigenvalue; unlike the plain Euclidean ratio it does not depend on how uneven
-  /// the masses are.
+  /// the masses are.  Where double precision cannot reach it -- the floor is about
+  /// `64 eps lambda_max / l`, with `lambda_max` bounded by Gershgorin, which matters for the
+  /// lowest eigenvalues of meshes with 100k+ vertices -- the floor is required instead.
   double tolerance = 1e-10;
   std::uint64_t seed = 1;
   /// Small problems (up to 1500 unknowns, or asking for a third of the space) are
