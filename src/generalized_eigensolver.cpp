@@ -7,7 +7,6 @@
 
 #include <CGAL/Tangent_vector_fields/Generalized_eigensolver.h>
 #include <CGAL/Tangent_vector_fields/Sparse_ldlt_solver.h>
-#include <CGAL/Tangent_vector_fields/Sparse_spd_solver.h>
 #include <CGAL/Tangent_vector_fields/errors.h>
 
 #include <Eigen/Dense>
@@ -155,14 +154,14 @@ Eigenpairs dense_eigenpairs(const Problem& p, int count)
 }
 
 // ---------------------------------------------------------------------------
-// Spectrum slicing.  The wanted part of the spectrum is cut into windows
-// (sigma_{s-1}, sigma_s]; an LDL^T factorisation of A - sigma_s D gives both the
-// shift-and-invert operator of a short block Lanczos run and, by Sylvester's law,
-// the exact number of eigenvalues below sigma_s.  So each window's eigenvalue count
-// is known before its run starts, and the run stops once it has found exactly that
-// many: completeness is proved window by window.  Orthogonalisation is against the
-// run's own basis (about 2-3x the window count) and the few converged vectors next
-// to the window, instead of against everything found so far.
+// Spectrum slicing.  The wanted part of the spectrum is cut into windows (lo, hi].
+// An LDL^T factorisation of A - hi D gives, by Sylvester's law, the exact number of
+// eigenvalues below hi, so each window's count is known before its run starts; a
+// second factorisation, at the window middle, drives a short block shift-and-invert
+// Lanczos run that stops once it has found exactly that many: completeness is proved
+// window by window.  Orthogonalisation is against the run's own basis (about 3-4x
+// the window count with blocks of 4) and the converged vectors next to the window,
+// instead of against everything found so far.
 
 struct Ritz_set
 {
@@ -171,8 +170,8 @@ struct Ritz_set
 };
 
 // One block Lanczos run at shift `sigma` on the complement of `locked` (and the
-// kernel).  Collects the converged pairs with eigenvalue in (lo, sigma] into
-// `window` (exactly `wanted` of them) and those in (sigma, carry_hi) into `carry`.
+// kernel).  Collects the converged pairs with eigenvalue in (lo, hi] into `window`
+// (exactly `wanted` of them) and those in (hi, carry_hi) into `carry`.
 void lanczos_window(const Problem& p, const Sparse_matrix& K, const Sparse_ldlt_solver& solver, double sigma, const Eigen::MatrixXd& locked,
                     double lo, double hi, int wanted, double carry_hi, const Eigensolver_options& options,
                     std::mt19937_64& generator, Ritz_set& window, Ritz_set& carry, int& applications, int& basis_used,
@@ -388,8 +387,6 @@ Eigenpairs sliced_eigenpairs(const Sparse_matrix& A, const Problem& p, int count
     // |lambda - sigma| / lambda, and the lowest eigenvalues need a shift next to them
     // (just below 0; measured: a shift at the middle of (0, hi] left them at 1e-10).
     double sigma = lo == 0 ? -1e-2 / total_mass : 0.5 * (lo + hi);
-    factor_at(sigma);
-    if(solver.smallest_relative_pivot() < 1e-14) factor_at(sigma += 1e-6 * (hi - lo));
     // Lock the found vectors near the window (and the carried ones) out of the run.
     std::vector<const Eigen::VectorXd*> lock;
     const double reach = lo - 0.5 * (hi - lo);
@@ -410,8 +407,10 @@ Eigenpairs sliced_eigenpairs(const Sparse_matrix& A, const Problem& p, int count
       throw Numerical_failure("spectrum slicing: more eigenvalues carried into (" + std::to_string(lo) + ", " +
                               std::to_string(hi) + "] than the inertia count allows");
     Ritz_set window, new_carry;
-    if(wanted > 0)
+    if(wanted > 0) // else the carried pairs fill the window: no run, no factorisation
     {
+      factor_at(sigma);
+      if(solver.smallest_relative_pivot() < 1e-14) factor_at(sigma += 1e-6 * (hi - lo));
       try
       {
         lanczos_window(p, K, solver, sigma, locked, lo, hi, wanted, hi + 0.5 * (hi - lo), options, generator, window,

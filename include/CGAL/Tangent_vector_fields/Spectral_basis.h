@@ -79,10 +79,12 @@ public:
 
   template <class NamedParameters = parameters::Default_named_parameters>
   explicit Spectral_basis(const TriangleMesh& mesh, const NamedParameters& np = parameters::default_values())
-    : operators_(mesh, np), solver_(std::make_shared<Hodge_solver>(operators_.shared_matrices())),
-      basis_(std::make_shared<Eigenfield_basis>(solver_, internal::basis_request(np).first,
-                                                internal::basis_request(np).second))
-  {}
+    : operators_(mesh, np)
+  {
+    const auto request = internal::basis_request(np);
+    basis_ = std::make_shared<Eigenfield_basis>(std::make_shared<Hodge_solver>(operators_.shared_matrices()),
+                                                request.first, request.second);
+  }
 
   /// Reads a basis saved by `save` for this mesh (`np`: options of `Discrete_operators`).
   /// \throws Invalid_input if the file does not belong to this mesh, or is unreadable.
@@ -91,9 +93,9 @@ public:
                              const NamedParameters& np = parameters::default_values())
   {
     Operators operators(mesh, np);
-    auto solver = std::make_shared<Hodge_solver>(operators.shared_matrices());
-    auto basis = std::make_shared<Eigenfield_basis>(Eigenfield_basis::load(solver, path));
-    return Spectral_basis(std::move(operators), std::move(solver), std::move(basis));
+    auto basis = std::make_shared<Eigenfield_basis>(
+        Eigenfield_basis::load(std::make_shared<Hodge_solver>(operators.shared_matrices()), path));
+    return Spectral_basis(std::move(operators), std::move(basis));
   }
 
   /// Writes the basis to a versioned binary file that `load` checks against the mesh.
@@ -134,13 +136,12 @@ public:
   double biharmonic_energy(const Eigen::VectorXd& a) const { return basis_->biharmonic_energy(a); }
 
 private:
-  Spectral_basis(Operators operators, std::shared_ptr<Hodge_solver> solver, std::shared_ptr<Eigenfield_basis> basis)
-    : operators_(std::move(operators)), solver_(std::move(solver)), basis_(std::move(basis))
+  Spectral_basis(Operators operators, std::shared_ptr<const Eigenfield_basis> basis)
+    : operators_(std::move(operators)), basis_(std::move(basis))
   {}
 
   Operators operators_;
-  std::shared_ptr<Hodge_solver> solver_;
-  std::shared_ptr<const Eigenfield_basis> basis_;
+  std::shared_ptr<const Eigenfield_basis> basis_; // holds the Hodge solver it was built with
 };
 
 /// \brief Filters a face field through the spectral basis of `mesh`.
