@@ -47,6 +47,23 @@ public:
   using std::invalid_argument::invalid_argument;
 };
 
+/// Thrown when a set of field-design constraints cannot be met: a new constraint
+/// repeats or contradicts earlier ones (its rows depend on theirs), or the basis is
+/// too small to satisfy that many independent constraints.  The constraint is not added.
+class Infeasible_constraints : public Invalid_input
+{
+public:
+  Infeasible_constraints(const std::string& what, double independence, double residual)
+    : Invalid_input(what), independence_(independence), residual_(residual) {}
+  /// `sin^2` of the angle between the new rows and the span of the others (0: dependent).
+  double independence() const { return independence_; }
+  /// How far the requested value is from the one the other constraints already imply.
+  double residual() const { return residual_; }
+
+private:
+  double independence_, residual_;
+};
+
 /// Thrown when a numerical self-check fails: a factorisation breaks down, or the
 /// computed harmonic space does not have the dimension the topology predicts.
 class Numerical_failure : public std::runtime_error

@@ -1,0 +1,172 @@
+// Copyright (c) 2026 The Tangent_vector_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TANGENT_VECTOR_FIELDS_SPLINE_SOLVER_H
+#define CGAL_TANGENT_VECTOR_FIELDS_SPLINE_SOLVER_H
+
+/// \file Spline_solver.h
+/// Tangent vector field splines (SPEC 7): minimise `E_B(x) + omega E_D(x)` subject to
+/// hard constraints `C~ x = c`.  This header holds what the reduced and the full
+/// solver share: the constraint set and its edits, the small range-space system,
+/// and the report.
+
+#include <CGAL/Tangent_vector_fields/Field_constraint.h>
+#include <CGAL/Tangent_vector_fields/internal/Constraint_system.h>
+
+#include <Eigen/Core>
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Tangent_vector_fields {
+
+/// Handle of a constraint in a solver; stays valid until the constraint is removed.
+typedef int Constraint_id;
+
+/// Options shared by the spline solvers.
+struct Spline_options
+{
+  /// Tension `omega` of `E_B + omega E_D`, for the mesh scaled to unit total area
+  /// (so that the result does not depend on the mesh's scale).  0: pure biharmonic.
+  double omega = 0;
+  /// A new constraint row whose `sin^2` angle to the span of the others (in the
+  /// metric of the energy) is below this is refused as dependent.  Double precision
+  /// leaves about 1e-16 for exact repeats; 1e-10 also catches rows a basis cannot tell apart.
+  double dependency_tolerance = 1e-10;
+  /// Rows above the dependency tolerance but below this are accepted with a warning
+  /// (meeting them costs a large energy: the field may swing wildly between them).
+  double warning_tolerance = 1e-6;
+};
+
+/// What a solve found besides the field.
+struct Spline_report
+{
+  int constraints = 0;
+  int rows = 0;
+  /// Smallest `sin^2` angle of a row to the span of the earlier rows (1: orthogonal, 0: dependent).
+  double smallest_independence = 1;
+  /// Harmonic directions that no constraint determines; they are set to zero.
+  int undetermined_harmonic = 0;
+  /// Largest `|C~_i x - c_i|`, relative to the largest `|c|` (or absolute if all are 0).
+  double constraint_residual = 0;
+  /// `E_B(x) + omega_eff E_D(x)` of the solution, for the mesh as given.
+  double energy = 0;
+  std::vector<std::string> warnings;
+};
+
+/// \brief Common part of the tangent vector field spline solvers.
+///
+/// The range-space method: each constraint row `r_i` is pulled back once to
+/// `y_i = Q^+ r_i^T` (the energy's pseudo-inverse on the fields orthogonal to the
+/// harmonic ones), `K_ij = r_i y_j`; the spline is `x = sum mu_i y_i + U_h z` with
+/// `(mu, z)` from the small system of `internal::Constraint_system`.
+///
+/// Harmonic fields (genus > 0, boundaries) have zero energy.  They are solved for
+/// separately, not penalised: the spline is the exact minimiser of `E_B + omega E_D`;
+/// harmonic directions the constraints do not determine are set to zero (the
+/// minimum-norm minimiser) and counted in the report.
+///
+/// Editing: `change` with the same kind and place of constraint only changes values
+/// (one back-substitution at the next solve); `add` appends rows to the small Cholesky
+/// factor, `remove` re-triangularises it: neither refactors from scratch.
+class Spline_solver
+{
+public:
+  virtual ~Spline_solver();
+
+  /// Adds a constraint.
+  /// \throws Invalid_input for a malformed constraint (see `constraint_rows`).
+  /// \throws Infeasible_constraints if its rows depend on those already present.
+  Constraint_id add(const Field_constraint& constraint);
+  /// Adds several constraints with one batch of pull-backs (faster for the full solver).
+  /// All or nothing: on an exception none of them is added.
+  std::vector<Constraint_id> add(const std::vector<Field_constraint>& constraints);
+  /// Replaces a constraint.  Same kind and place: only the values change.
+  void change(Constraint_id id, const Field_constraint& constraint);
+  void remove(Constraint_id id);
+  void clear();
+
+  bool contains(Constraint_id id) const { return entries_.count(id) > 0; }
+  const Field_constraint& constraint(Constraint_id id) const;
+  std::vector<Constraint_id> constraint_ids() const;
+  int number_of_constraints() const { return static_cast<int>(entries_.size()); }
+  int number_of_rows() const { return static_cast<int>(rows_.size()); }
+  /// Dimension of the harmonic fields the solver represents.
+  int harmonic_dimension() const { return harmonic_dimension_; }
+
+  /// Changes the tension (`options().omega`): every row is pulled back again and the
+  /// small system rebuilt (the full solver also refactors its energy).
+  void set_omega(double omega);
+  /// `omega` for the mesh as given (`options.omega / area`).
+  double effective_omega() const { return omega_; }
+  const Spline_options& options() const { return options_; }
+  const Operator_matrices& operators() const { return *operators_; }
+
+  /// The spline as frame coordinates (`2nf`); solves if constraints changed.
+  virtual Eigen::VectorXd field() const = 0;
+  /// The report of the last solve (solves if needed).
+  const Spline_report& report() const;
+
+protected:
+  Spline_solver(std::shared_ptr<const Operator_matrices> operators, int harmonic_dimension,
+                const Spline_options& options);
+
+  struct Row
+  {
+    Constraint_row row;
+    Eigen::VectorXd representation; // solver-specific form of the row (may be empty)
+    Eigen::VectorXd y;              // pull-back Q^+ r^T
+    Eigen::VectorXd harmonic;       // r U_h
+  };
+  /// Fills `representation`, `y` and `harmonic` of every row.
+  virtual void pull_back(std::vector<Row>& rows) const = 0;
+  /// `r y` for a row and a vector of the solver's space.
+  virtual double apply(const Row& row, const Eigen::VectorXd& y) const = 0;
+  /// Energy of a solution in the solver's space.
+  virtual double energy(const Eigen::VectorXd& solution) const = 0;
+  /// Places harmonic coefficients `z` into a solution of the solver's space.
+  virtual void add_harmonic(const Eigen::VectorXd& z, Eigen::VectorXd& solution) const = 0;
+  /// Dimension of the solver's space (basis size, or `2nf`).
+  virtual int space_dimension() const = 0;
+  /// Extra text for dependency errors (e.g. "the basis has only d fields").
+  virtual std::string dependency_hint() const { return std::string(); }
+  /// Called when `omega` changed, before the rows are pulled back again.
+  virtual void energy_changed() {}
+
+  /// The solution in the solver's space (coefficients or frame coordinates).
+  const Eigen::VectorXd& solution() const;
+
+  std::shared_ptr<const Operator_matrices> operators_;
+  Spline_options options_;
+  double omega_ = 0;          // effective omega for the mesh as given
+  double harmonic_scale_ = 0; // energy of a unit field of frequency 1/area
+
+private:
+  struct Entry
+  {
+    Field_constraint constraint;
+    int first_row;
+    int row_count;
+  };
+  // Pulls back and appends the rows of `constraints`, under the ids given; all or nothing.
+  void insert(const std::vector<Field_constraint>& constraints, const std::vector<Constraint_id>& ids);
+  void set_scales();
+  void solve() const;
+
+  std::map<Constraint_id, Entry> entries_;
+  std::vector<Row> rows_;
+  Constraint_id next_id_ = 0;
+  std::unique_ptr<internal::Constraint_system> system_;
+  int harmonic_dimension_;
+  mutable bool solved_ = false;
+  mutable Eigen::VectorXd solution_;
+  mutable Spline_report report_;
+};
+
+} // namespace Tangent_vector_fields
+} // namespace CGAL
+
+#endif

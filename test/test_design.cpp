@@ -1,0 +1,438 @@
+// Copyright (c) 2026 The Tangent_vector_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+// Field design (SPEC 7): tangent vector field splines, reduced and full, and their
+// constraints: constraints met, energies nested in the basis size, reduced against
+// full, sources and vortices, harmonic parts, edits, scale invariance, and the
+// refusals of constraint sets that cannot be met.
+
+#include "test_meshes.h"
+
+#include <CGAL/Tangent_vector_fields/Discrete_operators.h>
+#include <CGAL/Tangent_vector_fields/Eigenfield_basis.h>
+#include <CGAL/Tangent_vector_fields/Full_spline_solver.h>
+#include <CGAL/Tangent_vector_fields/Reduced_spline_solver.h>
+#include <CGAL/Tangent_vector_fields/errors.h>
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace TVF = CGAL::Tangent_vector_fields;
+using namespace tvf_test;
+
+namespace {
+
+struct Design_setup
+{
+  std::shared_ptr<const TVF::Operator_matrices> ops;
+  std::shared_ptr<TVF::Hodge_solver> hodge;
+  std::shared_ptr<TVF::Eigenfield_basis> basis;
+  int nf = 0;
+};
+
+// Operators, Hodge solver and a basis of `basis_size` eigenfields (0: all 2nf).
+Design_setup setup(const Mesh& mesh, int basis_size)
+{
+  Design_setup s;
+  TVF::Discrete_operators<Mesh> operators(mesh);
+  s.ops = operators.shared_matrices();
+  s.nf = s.ops->mesh().number_of_faces();
+  s.hodge = std::make_shared<TVF::Hodge_solver>(s.ops);
+  const int d = basis_size == 0 ? 2 * s.nf : basis_size;
+  s.basis = std::make_shared<TVF::Eigenfield_basis>(s.hodge, TVF::Basis_request::lowest(d));
+  return s;
+}
+
+// A tangent vector of face f: a fixed combination of its frame.
+std::array<double, 3> tangent(const TVF::Intrinsic_mesh& m, int f, double a, double b)
+{
+  const auto& e1 = m.frame_e1(f);
+  const auto& e2 = m.frame_e2(f);
+  return {{a * e1[0] + b * e2[0], a * e1[1] + b * e2[1], a * e1[2] + b * e2[2]}};
+}
+
+// A mixed constraint set: vectors in spread-out faces, a direction, a divergence at
+// a vertex and at a point, a curl at an edge and at a point.
+std::vector<TVF::Field_constraint> mixed_constraints(const TVF::Intrinsic_mesh& m, int vectors, unsigned seed)
+{
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<TVF::Field_constraint> c;
+  const int nf = m.number_of_faces();
+  for(int i = 0; i < vectors; ++i)
+    c.push_back(TVF::Field_constraint::vector_in_face((i * 7919 + 13) % nf, tangent(m, (i * 7919 + 13) % nf, u(rng), u(rng))));
+  c.push_back(TVF::Field_constraint::direction_in_face((nf / 2 + 3) % nf, tangent(m, (nf / 2 + 3) % nf, 1, 2)));
+  c.push_back(TVF::Field_constraint::divergence_at_vertex(m.face_vertices(nf / 3)[0], 0.7));
+  c.push_back(TVF::Field_constraint::divergence_at_point(nf / 5, {{0.2, 0.3, 0.5}}, -0.4));
+  int interior = m.interior_edges()[m.number_of_interior_edges() / 2];
+  c.push_back(TVF::Field_constraint::curl_at_edge(interior, 0.9));
+  c.push_back(TVF::Field_constraint::curl_at_point((2 * nf) / 3, {{0.6, 0.1, 0.3}}, -0.5));
+  return c;
+}
+
+// |C~ x - c| over all rows, relative to max |c|.
+double constraint_residual(const TVF::Operator_matrices& ops, const std::vector<TVF::Field_constraint>& constraints,
+                           const Eigen::VectorXd& x)
+{
+  double worst = 0, largest = 0;
+  for(const auto& c : constraints)
+    for(const auto& row : TVF::constraint_rows(ops, c))
+    {
+      worst = std::max(worst, std::abs(row.dot(x) - row.value));
+      largest = std::max(largest, std::abs(row.value));
+    }
+  return worst / largest;
+}
+
+double relative_mx_error(const TVF::Operator_matrices& ops, const Eigen::VectorXd& x, const Eigen::VectorXd& reference)
+{
+  const Eigen::VectorXd& m = ops.field_masses();
+  const Eigen::VectorXd d = x - reference;
+  return std::sqrt(d.dot(m.cwiseProduct(d)) / reference.dot(m.cwiseProduct(reference)));
+}
+
+} // namespace
+
+TEST(Spline, ConstraintsMetReducedAndFullOnSphereAndTorus)
+{
+  // Genus 0 (no harmonic fields) and genus 1 (two): every row met to 1e-9 (relative
+  // to the largest value) by both solvers; the full solver's pull-backs reach the
+  // CG tolerance.
+  for(int genus : {0, 1})
+  {
+    const Mesh mesh = genus == 0 ? make_icosphere(2) : make_torus(16, 10);
+    Design_setup s = setup(mesh, 200);
+    const auto constraints = mixed_constraints(s.ops->mesh(), 6, 3);
+    TVF::Spline_options options;
+    options.omega = 10;
+    TVF::Reduced_spline_solver reduced(s.basis, 0, options);
+    reduced.add(constraints);
+    TVF::Full_spline_solver full(s.hodge, options);
+    full.add(constraints);
+    EXPECT_LT(constraint_residual(*s.ops, constraints, reduced.field()), 1e-9) << "genus " << genus;
+    EXPECT_LT(constraint_residual(*s.ops, constraints, full.field()), 1e-9) << "genus " << genus;
+    EXPECT_LT(reduced.report().constraint_residual, 1e-9);
+    EXPECT_LT(full.report().constraint_residual, 1e-9);
+    EXPECT_LT(full.statistics().residual, 1e-10);
+    EXPECT_EQ(reduced.harmonic_dimension(), 2 * genus);
+    EXPECT_EQ(full.harmonic_dimension(), 2 * genus);
+    EXPECT_EQ(full.report().undetermined_harmonic, 0);
+    EXPECT_TRUE(full.report().warnings.empty()) << full.report().warnings.front();
+  }
+}
+
+TEST(Spline, ReducedEnergyDecreasesWithBasisSizeToTheFullEnergy)
+{
+  // Nested subspaces: the reduced minimum cannot increase with d; with the whole
+  // basis (2nf fields) it is the full minimum, and the fields agree.
+  for(int genus : {0, 1})
+  {
+    const Mesh mesh = genus == 0 ? make_icosphere(2) : make_torus(14, 8);
+    Design_setup s = setup(mesh, 0);
+    const auto constraints = mixed_constraints(s.ops->mesh(), 5, 11);
+    TVF::Spline_options options;
+    options.omega = 3;
+    TVF::Full_spline_solver full(s.hodge, options);
+    full.add(constraints);
+    const double full_energy = full.report().energy;
+    double previous = std::numeric_limits<double>::infinity();
+    double previous_error = std::numeric_limits<double>::infinity();
+    for(int d : {40, 80, 160, 320, 2 * s.nf})
+    {
+      TVF::Reduced_spline_solver reduced(s.basis, d, options);
+      reduced.add(constraints);
+      const double energy = reduced.report().energy;
+      const double error = relative_mx_error(*s.ops, reduced.field(), full.field());
+      EXPECT_LE(energy, previous * (1 + 1e-10)) << "d = " << d;
+      EXPECT_GE(energy, full_energy * (1 - 1e-9)) << "d = " << d;
+      EXPECT_LE(error, previous_error * 1.05) << "d = " << d; // a projection error: decreases in practice
+      previous = energy;
+      previous_error = error;
+    }
+    EXPECT_NEAR(previous / full_energy, 1, 1e-8);
+    EXPECT_LT(previous_error, 1e-7);
+  }
+}
+
+TEST(Spline, PositiveDivergenceIsASourceAndPositiveCurlACounterClockwiseVortex)
+{
+  // On the sphere, one divergence (curl) constraint at the centroid of a face gives a
+  // field pointing away from it (turning counter-clockwise about the outward normal)
+  // in every face of the ring around that face; the same for a divergence at a vertex.
+  const Mesh mesh = make_icosphere(3);
+  Design_setup s = setup(mesh, 100);
+  const TVF::Intrinsic_mesh& m = s.ops->mesh();
+  auto centroid = [&](int f) {
+    std::array<double, 3> c{{0, 0, 0}};
+    for(int k = 0; k < 3; ++k)
+      for(int i = 0; i < 3; ++i) c[i] += m.position(m.face_vertices(f)[k])[i] / 3;
+    return c;
+  };
+  const int center_face = 17;
+  const int center_vertex = m.face_vertices(center_face)[1];
+  for(int kind = 0; kind < 3; ++kind)
+  {
+    const bool curl = kind == 1;
+    const TVF::Field_constraint c =
+        kind == 0 ? TVF::Field_constraint::divergence_at_point(center_face, {{1. / 3, 1. / 3, 1. / 3}}, 1.0)
+        : kind == 1 ? TVF::Field_constraint::curl_at_point(center_face, {{1. / 3, 1. / 3, 1. / 3}}, 1.0)
+                    : TVF::Field_constraint::divergence_at_vertex(center_vertex, 1.0);
+    const std::array<double, 3> center = kind == 2 ? m.position(center_vertex) : centroid(center_face);
+    TVF::Reduced_spline_solver reduced(s.basis, 0);
+    TVF::Full_spline_solver full(s.hodge);
+    reduced.add(c);
+    full.add(c);
+    for(const Eigen::VectorXd& x : {reduced.field(), full.field()})
+    {
+      int faces = 0;
+      for(int f = 0; f < m.number_of_faces(); ++f)
+      {
+        if(f == center_face && kind != 2) continue;
+        bool ring = false;
+        for(int a : m.face_vertices(f))
+          ring = ring || (kind == 2 ? a == center_vertex
+                                    : (a == m.face_vertices(center_face)[0] || a == m.face_vertices(center_face)[1] ||
+                                       a == m.face_vertices(center_face)[2]));
+        if(!ring) continue;
+        ++faces;
+        const std::array<double, 3> p = centroid(f);
+        const std::array<double, 2> r = m.to_frame(f, {{p[0] - center[0], p[1] - center[1], p[2] - center[2]}});
+        // Frame coordinates of the radial direction; the counter-clockwise direction is J r.
+        const double a = curl ? -r[1] : r[0], b = curl ? r[0] : r[1];
+        EXPECT_GT(a * x[2 * f] + b * x[2 * f + 1], 0) << c.describe() << ", face " << f;
+      }
+      EXPECT_GE(faces, 5);
+    }
+  }
+}
+
+TEST(Spline, HarmonicPartFromConstraintsOrZeroWhenUndetermined)
+{
+  // Torus: divergence and curl constraints see no harmonic field, so the harmonic
+  // part stays undetermined (2 directions, set to zero: the field is then orthogonal
+  // to the harmonic fields); vector constraints determine it.
+  const Mesh mesh = make_torus(16, 10);
+  Design_setup s = setup(mesh, 150);
+  const TVF::Intrinsic_mesh& m = s.ops->mesh();
+  const Eigen::MatrixXd& H = s.hodge->harmonic_basis();
+  const Eigen::VectorXd& masses = s.ops->field_masses();
+  {
+    TVF::Full_spline_solver full(s.hodge);
+    TVF::Reduced_spline_solver reduced(s.basis);
+    const std::vector<TVF::Field_constraint> c = {TVF::Field_constraint::divergence_at_vertex(5, 1.0),
+                                                  TVF::Field_constraint::curl_at_edge(m.interior_edges()[40], 1.0)};
+    full.add(c);
+    reduced.add(c);
+    EXPECT_EQ(full.report().undetermined_harmonic, 2);
+    EXPECT_EQ(reduced.report().undetermined_harmonic, 2);
+    EXPECT_FALSE(full.report().warnings.empty());
+    const Eigen::VectorXd x = full.field();
+    EXPECT_LT((H.transpose() * masses.asDiagonal() * x).norm(), 1e-9 * std::sqrt(x.dot(masses.cwiseProduct(x))));
+    EXPECT_LT(constraint_residual(*s.ops, c, x), 1e-9);
+  }
+  {
+    // Two vector constraints: their 4 rows determine both harmonic directions; the
+    // harmonic part of the spline is then non-zero.
+    TVF::Full_spline_solver full(s.hodge);
+    full.add(TVF::Field_constraint::vector_in_face(3, tangent(m, 3, 1, 0)));
+    full.add(TVF::Field_constraint::vector_in_face(100, tangent(m, 100, 0, 1)));
+    EXPECT_EQ(full.report().undetermined_harmonic, 0);
+    const Eigen::VectorXd x = full.field();
+    EXPECT_GT((H.transpose() * masses.asDiagonal() * x).norm(), 1e-3 * std::sqrt(x.dot(masses.cwiseProduct(x))));
+  }
+}
+
+TEST(Spline, EditsEqualAFreshSolve)
+{
+  // Value edits (one back-substitution), removals (re-triangularised factor) and
+  // re-additions give the same spline as a solver built from scratch.
+  const Mesh mesh = make_torus(16, 10);
+  Design_setup s = setup(mesh, 150);
+  const TVF::Intrinsic_mesh& m = s.ops->mesh();
+  auto constraints = mixed_constraints(m, 6, 5);
+  TVF::Reduced_spline_solver edited(s.basis);
+  TVF::Full_spline_solver edited_full(s.hodge);
+  std::vector<TVF::Constraint_id> ids = edited.add(constraints);
+  std::vector<TVF::Constraint_id> full_ids = edited_full.add(constraints);
+  edited.field();
+  // Change values of a vector and a divergence; move a curl point (not a value edit).
+  constraints[1].vector = tangent(m, constraints[1].face, -0.3, 0.8);
+  constraints[7].value = 2.5;
+  constraints[10].barycentric = {{0.2, 0.2, 0.6}};
+  for(int i : {1, 7, 10})
+  {
+    edited.change(ids[i], constraints[i]);
+    edited_full.change(full_ids[i], constraints[i]);
+  }
+  // Remove one in the middle.
+  edited.remove(ids[3]);
+  edited_full.remove(full_ids[3]);
+  std::vector<TVF::Field_constraint> remaining;
+  for(std::size_t i = 0; i < constraints.size(); ++i)
+    if(i != 3) remaining.push_back(constraints[i]);
+  TVF::Reduced_spline_solver fresh(s.basis);
+  fresh.add(remaining);
+  TVF::Full_spline_solver fresh_full(s.hodge);
+  fresh_full.add(remaining);
+  EXPECT_LT(relative_mx_error(*s.ops, edited.field(), fresh.field()), 1e-10);
+  EXPECT_LT(relative_mx_error(*s.ops, edited_full.field(), fresh_full.field()), 1e-9);
+  EXPECT_EQ(edited.number_of_constraints(), static_cast<int>(remaining.size()));
+  // Tension changes rebuild everything; then equal to a solver made with that tension.
+  edited.set_omega(20);
+  TVF::Spline_options options;
+  options.omega = 20;
+  TVF::Reduced_spline_solver fresh20(s.basis, 0, options);
+  fresh20.add(remaining);
+  EXPECT_LT(relative_mx_error(*s.ops, edited.field(), fresh20.field()), 1e-10);
+  EXPECT_GT(relative_mx_error(*s.ops, fresh.field(), fresh20.field()), 1e-4); // the tension matters
+}
+
+TEST(Spline, InvariantToScaleAndRigidMotion)
+{
+  // Vector constraints keep their values; divergence and curl scale as 1/length.
+  // Reduced (with the basis of the scaled mesh) and full give the same field.
+  const Mesh base = make_torus(14, 8);
+  Design_setup s0 = setup(base, 120);
+  const auto constraints0 = mixed_constraints(s0.ops->mesh(), 5, 9);
+  TVF::Spline_options options;
+  options.omega = 5;
+  TVF::Reduced_spline_solver r0(s0.basis, 0, options);
+  r0.add(constraints0);
+  TVF::Full_spline_solver f0(s0.hodge, options);
+  f0.add(constraints0);
+  for(double scale : {1e-8, 1e8})
+  {
+    Mesh mesh = base;
+    transform(mesh, scale, rotation_matrix(Vector_3(1, 2, 3), 0.7), Vector_3(5, -2, 1));
+    Design_setup s = setup(mesh, 120);
+    // Same constraints, vectors rotated with the mesh (the frame follows), div/curl / scale.
+    auto constraints = constraints0;
+    for(auto& c : constraints)
+    {
+      if(c.kind == TVF::Constraint_kind::vector || c.kind == TVF::Constraint_kind::direction)
+      {
+        const std::array<double, 2> a = s0.ops->mesh().to_frame(c.face, c.vector);
+        c.vector = s.ops->mesh().from_frame(c.face, a[0], a[1]);
+      }
+      else
+        c.value /= scale;
+    }
+    TVF::Reduced_spline_solver r(s.basis, 0, options);
+    r.add(constraints);
+    TVF::Full_spline_solver f(s.hodge, options);
+    f.add(constraints);
+    EXPECT_LT(relative_mx_error(*s0.ops, r.field(), r0.field()), 1e-7) << scale;
+    EXPECT_LT(relative_mx_error(*s0.ops, f.field(), f0.field()), 1e-7) << scale;
+  }
+}
+
+TEST(Spline, ConstraintSetsThatCannotBeMetAreRefused)
+{
+  const Mesh mesh = make_icosphere(2);
+  Design_setup s = setup(mesh, 60);
+  const TVF::Intrinsic_mesh& m = s.ops->mesh();
+  auto expect_infeasible = [](TVF::Spline_solver& solver, const TVF::Field_constraint& c, double residual) {
+    const int before = solver.number_of_constraints();
+    try
+    {
+      solver.add(c);
+      ADD_FAILURE() << "accepted: " << c.describe();
+    }
+    catch(const TVF::Infeasible_constraints& e)
+    {
+      EXPECT_LT(e.independence(), 1e-10);
+      EXPECT_NEAR(e.residual(), residual, 1e-6 + 1e-6 * residual) << e.what();
+    }
+    EXPECT_EQ(solver.number_of_constraints(), before); // nothing added
+    EXPECT_TRUE(solver.field().allFinite());
+  };
+  for(int full = 0; full < 2; ++full)
+  {
+    std::unique_ptr<TVF::Spline_solver> solver;
+    if(full) solver = std::make_unique<TVF::Full_spline_solver>(s.hodge);
+    else solver = std::make_unique<TVF::Reduced_spline_solver>(s.basis);
+    // Two different vectors in one face: the second contradicts the first by |(0,1)-(1,0)| in its first row.
+    solver->add(TVF::Field_constraint::vector_in_face(10, tangent(m, 10, 1, 0)));
+    expect_infeasible(*solver, TVF::Field_constraint::vector_in_face(10, tangent(m, 10, 0, 1)), 1.0);
+    // Contradictory divergence at one vertex, and a curl contradicting itself.
+    solver->add(TVF::Field_constraint::divergence_at_vertex(40, 1.0));
+    expect_infeasible(*solver, TVF::Field_constraint::divergence_at_vertex(40, 3.0), 2.0);
+    solver->add(TVF::Field_constraint::curl_at_edge(100, -1.0));
+    expect_infeasible(*solver, TVF::Field_constraint::curl_at_edge(100, 0.5), 1.5);
+    // A direction in a face whose vector is fixed already (consistent: residual 0, still dependent).
+    expect_infeasible(*solver, TVF::Field_constraint::direction_in_face(10, tangent(m, 10, 1, 0)), 0.0);
+    EXPECT_LT(solver->report().constraint_residual, 1e-9);
+  }
+  // More independent constraints than the basis can satisfy: 60 fields, 31 vector constraints = 62 rows.
+  TVF::Reduced_spline_solver small(s.basis);
+  bool refused = false;
+  for(int f = 0; f < 31 && !refused; ++f)
+  {
+    try
+    {
+      small.add(TVF::Field_constraint::vector_in_face(f * 10, tangent(m, f * 10, 1, 1)));
+    }
+    catch(const TVF::Infeasible_constraints& e)
+    {
+      refused = true;
+      EXPECT_NE(std::string(e.what()).find("larger basis"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_TRUE(refused);
+  EXPECT_TRUE(small.field().allFinite());
+  EXPECT_LT(small.report().constraint_residual, 1e-8);
+  // Nearly dependent: divergences at two points 1e-4 apart in one face (rows that
+  // differ by ~1e-4, sin^2 ~ 1e-8): accepted with a warning, constraints still met.
+  for(int full = 0; full < 2; ++full)
+  {
+    std::unique_ptr<TVF::Spline_solver> near;
+    if(full) near = std::make_unique<TVF::Full_spline_solver>(s.hodge);
+    else near = std::make_unique<TVF::Reduced_spline_solver>(s.basis);
+    near->add(TVF::Field_constraint::divergence_at_point(5, {{0.3, 0.3, 0.4}}, 1.0));
+    near->add(TVF::Field_constraint::divergence_at_point(5, {{0.3001, 0.3, 0.3999}}, 1.0));
+    EXPECT_LT(near->report().smallest_independence, 1e-6);
+    EXPECT_GT(near->report().smallest_independence, 1e-10);
+    EXPECT_FALSE(near->report().warnings.empty());
+    EXPECT_LT(near->report().constraint_residual, 1e-8);
+    EXPECT_TRUE(near->field().allFinite());
+    // Exactly the same point with another value: refused.
+    expect_infeasible(*near, TVF::Field_constraint::divergence_at_point(5, {{0.3, 0.3, 0.4}}, 2.0), 1.0);
+  }
+}
+
+TEST(Spline, MalformedConstraintsAreInvalidInput)
+{
+  const Mesh mesh = make_disk(6);
+  Design_setup s = setup(mesh, 30);
+  const TVF::Intrinsic_mesh& m = s.ops->mesh();
+  TVF::Full_spline_solver full(s.hodge);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<TVF::Field_constraint> bad = {
+      TVF::Field_constraint::vector_in_face(-1, {{1, 0, 0}}),
+      TVF::Field_constraint::vector_in_face(m.number_of_faces(), {{1, 0, 0}}),
+      TVF::Field_constraint::vector_in_face(0, {{nan, 0, 0}}),
+      TVF::Field_constraint::vector_in_face(0, m.normal(0)),           // normal to the face
+      TVF::Field_constraint::direction_in_face(0, {{0, 0, 0}}),        // no direction
+      TVF::Field_constraint::divergence_at_vertex(m.number_of_vertices(), 1),
+      TVF::Field_constraint::divergence_at_point(0, {{0.5, 0.6, 0.1}}, 1), // sum 1.2
+      TVF::Field_constraint::curl_at_point(0, {{-0.5, 1.0, 0.5}}, 1),      // negative
+      TVF::Field_constraint::curl_at_edge(m.number_of_edges(), 1),
+      TVF::Field_constraint::curl_at_edge(0, std::numeric_limits<double>::infinity())};
+  for(const auto& c : bad) EXPECT_THROW(full.add(c), TVF::Invalid_input) << c.describe();
+  EXPECT_EQ(full.number_of_constraints(), 0);
+  // Boundary alignment: only on boundary edges; the field is then parallel to the edge.
+  EXPECT_THROW(TVF::Field_constraint::boundary_alignment(m, m.interior_edges()[0]), TVF::Invalid_input);
+  int boundary_edge = -1;
+  for(int e = 0; e < m.number_of_edges() && boundary_edge < 0; ++e)
+    if(m.is_boundary_edge(e)) boundary_edge = e;
+  full.add(TVF::Field_constraint::boundary_alignment(m, boundary_edge));
+  full.add(TVF::Field_constraint::vector_in_face(m.number_of_faces() / 2, tangent(m, m.number_of_faces() / 2, 1, 0)));
+  const Eigen::VectorXd x = full.field();
+  const int f = m.edge_faces(boundary_edge)[0];
+  const auto& p = m.position(m.edge_vertices(boundary_edge)[0]);
+  const auto& q = m.position(m.edge_vertices(boundary_edge)[1]);
+  const std::array<double, 2> t = m.to_frame(f, {{q[0] - p[0], q[1] - p[1], q[2] - p[2]}});
+  EXPECT_LT(std::abs(t[0] * x[2 * f + 1] - t[1] * x[2 * f]), 1e-9 * std::hypot(t[0], t[1]) * std::hypot(x[2 * f], x[2 * f + 1]));
+  EXPECT_GT(std::hypot(x[2 * f], x[2 * f + 1]), 1e-6);
+}
