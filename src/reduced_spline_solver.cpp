@@ -5,7 +5,6 @@
 #include <CGAL/Tangent_vector_fields/errors.h>
 
 #include <cmath>
-#include <map>
 
 namespace CGAL {
 namespace Tangent_vector_fields {
@@ -29,33 +28,8 @@ Reduced_spline_solver::Reduced_spline_solver(std::shared_ptr<const Eigenfield_ba
                                              const Spline_options& options)
   : Spline_solver(std::shared_ptr<const Operator_matrices>(basis, &basis->operators()),
                   harmonic_count(*basis, checked_size(*basis, basis_size)), options),
-    basis_(std::move(basis)), d_(checked_size(*basis_, basis_size))
+    basis_(std::move(basis)), d_(checked_size(*basis_, basis_size)), rows_in_basis_(*basis_, d_)
 {
-  const Operator_matrices& ops = basis_->operators();
-  G_rows_ = ops.G();
-  // (J G*)(2f, e) = -G*(2f+1, e), (J G*)(2f+1, e) = G*(2f, e): J applied to the rows.
-  Eigen::SparseMatrix<double> J = ops.J();
-  JG_star_rows_ = J * ops.G_star_interior();
-  exact_position_.assign(basis_->number_of_exact(), -1);
-  coexact_position_.assign(basis_->number_of_coexact(), -1);
-  exact_scale_ = Eigen::VectorXd::Zero(basis_->number_of_exact());
-  coexact_scale_ = Eigen::VectorXd::Zero(basis_->number_of_coexact());
-  for(int k = 0; k < d_; ++k)
-  {
-    const int i = basis_->index_in_type(k);
-    switch(basis_->type(k))
-    {
-    case Eigenfield_type::harmonic: harmonic_positions_.push_back(k); break;
-    case Eigenfield_type::exact:
-      exact_position_[i] = k;
-      exact_scale_[i] = 1 / std::sqrt(basis_->exact_eigenvalues()[i]);
-      break;
-    case Eigenfield_type::coexact:
-      coexact_position_[i] = k;
-      coexact_scale_[i] = 1 / std::sqrt(basis_->coexact_eigenvalues()[i]);
-      break;
-    }
-  }
   update_energy();
 }
 
@@ -71,45 +45,15 @@ void Reduced_spline_solver::update_energy()
   }
 }
 
-Eigen::VectorXd Reduced_spline_solver::basis_row(const Constraint_row& row) const
-{
-  // r U = (G^T r)^T Phi Lambda^-1/2 (exact), ((J G*)^T r)^T Psi Mu^-1/2 (coexact), r U_h (harmonic).
-  std::map<int, double> vertices, edges;
-  for(const auto& e : row.entries)
-  {
-    for(Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(G_rows_, e.first); it; ++it)
-      vertices[static_cast<int>(it.col())] += e.second * it.value();
-    for(Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(JG_star_rows_, e.first); it; ++it)
-      edges[static_cast<int>(it.col())] += e.second * it.value();
-  }
-  Eigen::VectorXd exact = Eigen::VectorXd::Zero(basis_->number_of_exact());
-  for(const auto& v : vertices) exact += v.second * basis_->exact_eigenfunctions().row(v.first).transpose();
-  Eigen::VectorXd coexact = Eigen::VectorXd::Zero(basis_->number_of_coexact());
-  for(const auto& e : edges) coexact += e.second * basis_->coexact_eigenfunctions().row(e.first).transpose();
-  Eigen::VectorXd result = Eigen::VectorXd::Zero(d_);
-  for(int i = 0; i < exact.size(); ++i)
-    if(exact_position_[i] >= 0) result[exact_position_[i]] = exact[i] * exact_scale_[i];
-  for(int i = 0; i < coexact.size(); ++i)
-    if(coexact_position_[i] >= 0) result[coexact_position_[i]] = coexact[i] * coexact_scale_[i];
-  for(std::size_t j = 0; j < harmonic_positions_.size(); ++j)
-  {
-    const int k = harmonic_positions_[j];
-    const int column = basis_->index_in_type(k);
-    double s = 0;
-    for(const auto& e : row.entries) s += e.second * basis_->harmonic_fields()(e.first, column);
-    result[k] = s;
-  }
-  return result;
-}
-
 void Reduced_spline_solver::pull_back(std::vector<Row>& rows) const
 {
   for(Row& row : rows)
   {
     row.representation = basis_row(row.row);
     row.y = row.representation.cwiseProduct(inverse_energy_);
-    row.harmonic.resize(harmonic_positions_.size());
-    for(std::size_t j = 0; j < harmonic_positions_.size(); ++j) row.harmonic[j] = row.representation[harmonic_positions_[j]];
+    const std::vector<int>& harmonic = rows_in_basis_.harmonic_positions();
+    row.harmonic.resize(harmonic.size());
+    for(std::size_t j = 0; j < harmonic.size(); ++j) row.harmonic[j] = row.representation[harmonic[j]];
   }
 }
 
@@ -125,7 +69,8 @@ double Reduced_spline_solver::energy(const Eigen::VectorXd& a) const
 
 void Reduced_spline_solver::add_harmonic(const Eigen::VectorXd& z, Eigen::VectorXd& a) const
 {
-  for(std::size_t j = 0; j < harmonic_positions_.size(); ++j) a[harmonic_positions_[j]] += z[j];
+  const std::vector<int>& harmonic = rows_in_basis_.harmonic_positions();
+  for(std::size_t j = 0; j < harmonic.size(); ++j) a[harmonic[j]] += z[j];
 }
 
 Eigen::VectorXd Reduced_spline_solver::field() const
@@ -135,7 +80,7 @@ Eigen::VectorXd Reduced_spline_solver::field() const
 
 std::string Reduced_spline_solver::dependency_hint() const
 {
-  const int free = d_ - static_cast<int>(harmonic_positions_.size());
+  const int free = d_ - static_cast<int>(rows_in_basis_.harmonic_positions().size());
   if(number_of_rows() + 1 > free)
     return "a basis of " + std::to_string(d_) + " fields (" + std::to_string(free) +
            " with energy) cannot meet more independent constraint rows than that: use a larger basis";

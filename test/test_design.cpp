@@ -12,6 +12,7 @@
 #include <CGAL/Tangent_vector_fields/Eigenfield_basis.h>
 #include <CGAL/Tangent_vector_fields/Full_spline_solver.h>
 #include <CGAL/Tangent_vector_fields/Reduced_spline_solver.h>
+#include <CGAL/Tangent_vector_fields/Soft_field_design.h>
 #include <CGAL/Tangent_vector_fields/errors.h>
 
 #include <gtest/gtest.h>
@@ -435,4 +436,130 @@ TEST(Spline, MalformedConstraintsAreInvalidInput)
   const std::array<double, 2> t = m.to_frame(f, {{q[0] - p[0], q[1] - p[1], q[2] - p[2]}});
   EXPECT_LT(std::abs(t[0] * x[2 * f + 1] - t[1] * x[2 * f]), 1e-9 * std::hypot(t[0], t[1]) * std::hypot(x[2 * f], x[2 * f + 1]));
   EXPECT_GT(std::hypot(x[2 * f], x[2 * f + 1]), 1e-6);
+}
+
+TEST(SoftDesign, ApproachesTheHardSplineAsTheWeightGrows)
+{
+  // min E_D + w_s E_B + w |C~x - c|^2 tends to the spline of E_B + (1/w_s) E_D as
+  // w grows (same minimiser up to the factor w_s); the gap shrinks like 1/w.
+  const Mesh mesh = make_torus(16, 10);
+  Design_setup s = setup(mesh, 200);
+  const auto constraints = mixed_constraints(s.ops->mesh(), 5, 21);
+  TVF::Spline_options spline_options;
+  spline_options.omega = 10;
+  TVF::Full_spline_solver hard(s.hodge, spline_options);
+  hard.add(constraints);
+  TVF::Reduced_spline_solver hard_reduced(s.basis, 0, spline_options);
+  hard_reduced.add(constraints);
+  TVF::Soft_design_options options;
+  options.omega = 0.1;
+  std::vector<double> errors, reduced_errors;
+  for(double weight : {1e2, 1e4, 1e6})
+  {
+    TVF::Full_soft_design soft(s.hodge, options);
+    TVF::Reduced_soft_design soft_reduced(s.basis, 0, options);
+    for(const auto& c : constraints)
+    {
+      soft.add(c, weight);
+      soft_reduced.add(c, weight);
+    }
+    errors.push_back(relative_mx_error(*s.ops, soft.field(), hard.field()));
+    reduced_errors.push_back(relative_mx_error(*s.ops, soft_reduced.field(), hard_reduced.field()));
+    EXPECT_LT(soft.residual(), 1e-10);
+  }
+  for(std::size_t i = 1; i < errors.size(); ++i)
+  {
+    EXPECT_LT(errors[i], errors[i - 1] / 30) << i;
+    EXPECT_LT(reduced_errors[i], reduced_errors[i - 1] / 30) << i;
+  }
+  EXPECT_LT(errors.back(), 1e-4);
+  EXPECT_LT(reduced_errors.back(), 1e-4);
+}
+
+TEST(SoftDesign, ReducedEqualsFullOnTheWholeBasisAndEditsEqualAFreshSolve)
+{
+  for(int genus : {0, 1})
+  {
+    const Mesh mesh = genus == 0 ? make_icosphere(2) : make_torus(14, 8);
+    Design_setup s = setup(mesh, 0);
+    const auto constraints = mixed_constraints(s.ops->mesh(), 5, 4);
+    TVF::Soft_design_options options;
+    options.omega = 0.05;
+    TVF::Full_soft_design full(s.hodge, options);
+    TVF::Reduced_soft_design reduced(s.basis, 0, options);
+    std::vector<int> ids;
+    for(const auto& c : constraints)
+    {
+      full.add(c, 3.0);
+      ids.push_back(reduced.add(c, 3.0));
+    }
+    EXPECT_LT(relative_mx_error(*s.ops, reduced.field(), full.field()), 1e-8) << "genus " << genus;
+    EXPECT_NEAR(reduced.energy() / full.energy(), 1, 1e-8);
+    // Rank-one downdates and updates against a fresh factorisation.
+    reduced.remove(ids[2]);
+    auto changed = constraints[7];
+    changed.value = -3;
+    reduced.change(ids[7], changed, 3.0);
+    reduced.change(ids[0], constraints[0], 10.0); // a new weight: a replacement
+    TVF::Reduced_soft_design fresh(s.basis, 0, options);
+    for(std::size_t i = 0; i < constraints.size(); ++i)
+      if(i != 2) fresh.add(i == 7 ? changed : constraints[i], i == 0 ? 10.0 : 3.0);
+    EXPECT_LT(relative_mx_error(*s.ops, reduced.field(), fresh.field()), 1e-10);
+  }
+}
+
+TEST(SoftDesign, UndeterminedHarmonicPartAndScaleInvariance)
+{
+  const Mesh base = make_torus(16, 10);
+  Design_setup s0 = setup(base, 100);
+  const TVF::Intrinsic_mesh& m = s0.ops->mesh();
+  {
+    TVF::Full_soft_design full(s0.hodge);
+    TVF::Reduced_soft_design reduced(s0.basis);
+    for(TVF::Soft_field_design* design : {static_cast<TVF::Soft_field_design*>(&full), static_cast<TVF::Soft_field_design*>(&reduced)})
+    {
+      design->add(TVF::Field_constraint::divergence_at_vertex(5, 1.0));
+      design->add(TVF::Field_constraint::curl_at_edge(m.interior_edges()[40], -1.0));
+      EXPECT_TRUE(design->field().allFinite());
+      EXPECT_GT(design->field().norm(), 0);
+      EXPECT_EQ(design->undetermined_harmonic(), 2);
+    }
+    // The undetermined harmonic part is zero: both fields are MX-orthogonal to the harmonic fields.
+    const Eigen::MatrixXd& H = s0.hodge->harmonic_basis();
+    const Eigen::VectorXd& masses = s0.ops->field_masses();
+    for(const Eigen::VectorXd& x : {full.field(), reduced.field()})
+      EXPECT_LT((H.transpose() * masses.asDiagonal() * x).norm(), 1e-9 * std::sqrt(x.dot(masses.cwiseProduct(x))));
+  }
+  const auto constraints0 = mixed_constraints(m, 5, 8);
+  TVF::Soft_design_options options;
+  options.omega = 0.2;
+  TVF::Full_soft_design f0(s0.hodge, options);
+  TVF::Reduced_soft_design r0(s0.basis, 0, options);
+  for(const auto& c : constraints0)
+  {
+    f0.add(c, 5);
+    r0.add(c, 5);
+  }
+  for(double scale : {1e-8, 1e8})
+  {
+    Mesh mesh = base;
+    transform(mesh, scale, rotation_matrix(Vector_3(0, 1, 1), 1.1));
+    Design_setup s = setup(mesh, 100);
+    TVF::Full_soft_design f(s.hodge, options);
+    TVF::Reduced_soft_design r(s.basis, 0, options);
+    for(auto c : constraints0)
+    {
+      if(c.kind == TVF::Constraint_kind::vector || c.kind == TVF::Constraint_kind::direction)
+      {
+        const std::array<double, 2> a = m.to_frame(c.face, c.vector);
+        c.vector = s.ops->mesh().from_frame(c.face, a[0], a[1]);
+      }
+      else
+        c.value /= scale;
+      f.add(c, 5);
+      r.add(c, 5);
+    }
+    EXPECT_LT(relative_mx_error(*s0.ops, f.field(), f0.field()), 1e-7) << scale;
+    EXPECT_LT(relative_mx_error(*s0.ops, r.field(), r0.field()), 1e-7) << scale;
+  }
 }

@@ -10,6 +10,7 @@
 
 #include <CGAL/Tangent_vector_fields/Eigenfield_basis.h>
 #include <CGAL/Tangent_vector_fields/Spline_solver.h>
+#include <CGAL/Tangent_vector_fields/internal/Basis_rows.h>
 
 #include <memory>
 
@@ -38,7 +39,7 @@ public:
   Eigen::VectorXd field() const override;
 
   /// The row `C~_i U` of a constraint row in this basis.
-  Eigen::VectorXd basis_row(const Constraint_row& row) const;
+  Eigen::VectorXd basis_row(const Constraint_row& row) const { return rows_in_basis_(row); }
 
 protected:
   void pull_back(std::vector<Row>& rows) const override;
@@ -54,14 +55,9 @@ private:
 
   std::shared_ptr<const Eigenfield_basis> basis_;
   int d_;
-  std::vector<int> harmonic_positions_; // positions of the harmonic elements among the first d
-  Eigen::VectorXd inverse_energy_;      // 1/D_k, 0 on harmonic elements
-  Eigen::VectorXd energy_;              // D_k
-  // Row-major copies of G and J G* (interior edges) to pull rows back to vertices and edges.
-  Eigen::SparseMatrix<double, Eigen::RowMajor> G_rows_, JG_star_rows_;
-  // Basis position and 1/sqrt(lambda) of the exact and coexact elements among the first d.
-  std::vector<int> exact_position_, coexact_position_;
-  Eigen::VectorXd exact_scale_, coexact_scale_;
+  internal::Basis_rows rows_in_basis_;
+  Eigen::VectorXd inverse_energy_; // 1/D_k, 0 on harmonic elements
+  Eigen::VectorXd energy_;         // D_k
 };
 
 } // namespace Tangent_vector_fields
