@@ -503,7 +503,9 @@ Eigenfield_basis::Matrix Eigenfield_basis::decompress(const Compressed_fields& c
   // Gather the coefficients per type, scaled to eigenfunction coefficients.
   Matrix ce = Matrix::Zero(number_of_exact(), a.cols()), cc = Matrix::Zero(number_of_coexact(), a.cols()),
          ch = Matrix::Zero(number_of_harmonic(), a.cols());
-  bool any_exact = false, any_coexact = false, any_harmonic = false;
+  // Only the eigenfunctions the coefficients reach are read (a prefix of each type).
+  Eigen::Index exact_used = 0, coexact_used = 0;
+  bool any_harmonic = false;
   for(Eigen::Index k = 0; k < a.rows(); ++k)
   {
     const Element& e = order_[k];
@@ -511,11 +513,11 @@ Eigenfield_basis::Matrix Eigenfield_basis::decompress(const Compressed_fields& c
     {
     case Eigenfield_type::exact:
       ce.row(e.index) = a.row(k) / std::sqrt(exact_values_[e.index]);
-      any_exact = true;
+      exact_used = std::max<Eigen::Index>(exact_used, e.index + 1);
       break;
     case Eigenfield_type::coexact:
       cc.row(e.index) = a.row(k) / std::sqrt(coexact_values_[e.index]);
-      any_coexact = true;
+      coexact_used = std::max<Eigen::Index>(coexact_used, e.index + 1);
       break;
     case Eigenfield_type::harmonic:
       ch.row(e.index) = a.row(k);
@@ -524,10 +526,10 @@ Eigenfield_basis::Matrix Eigenfield_basis::decompress(const Compressed_fields& c
     }
   }
   Matrix v = Matrix::Zero(ops.field_masses().size(), a.cols());
-  if(any_exact) v += ops.G() * (exact_functions_ * ce).eval();
-  if(any_coexact)
+  if(exact_used > 0) v += ops.G() * (exact_functions_.leftCols(exact_used) * ce.topRows(exact_used)).eval();
+  if(coexact_used > 0)
   {
-    const Matrix g = ops.G_star_interior() * (coexact_functions_ * cc).eval();
+    const Matrix g = ops.G_star_interior() * (coexact_functions_.leftCols(coexact_used) * cc.topRows(coexact_used)).eval();
     for(Eigen::Index c = 0; c < g.cols(); ++c) v.col(c) += ops.rotate(g.col(c));
   }
   if(any_harmonic) v += harmonic_ * ch;

@@ -11,70 +11,13 @@
 namespace CGAL {
 namespace Tangent_vector_fields {
 
-namespace internal {
 
-Eigen::MatrixXd projected_block_cg(const std::function<Eigen::MatrixXd(const Eigen::MatrixXd&)>& apply_A,
-                                   const std::function<Eigen::MatrixXd(const Eigen::MatrixXd&)>& precondition,
-                                   const std::function<void(Eigen::MatrixXd&)>& project_primal,
-                                   const std::function<void(Eigen::MatrixXd&)>& project_dual,
-                                   const Eigen::MatrixXd& B, double tolerance, int max_iterations,
-                                   int& iterations, double& residual)
+struct Full_spline_solver::Screened
 {
-  const Eigen::Index m = B.cols();
-  Eigen::MatrixXd R = B;
-  project_dual(R);
-  const Eigen::VectorXd b_norm = R.colwise().norm().transpose();
-  // Start from the preconditioner's answer: it is already accurate in most directions.
-  Eigen::MatrixXd X = Eigen::MatrixXd::Zero(B.rows(), m);
-  Eigen::MatrixXd Z = precondition(R);
-  project_primal(Z);
-  Eigen::MatrixXd P = Z;
-  Eigen::VectorXd rz = (R.cwiseProduct(Z)).colwise().sum().transpose();
-  std::vector<bool> active(m);
-  for(Eigen::Index j = 0; j < m; ++j) active[j] = b_norm[j] > 0;
-  iterations = 0;
-  residual = 0;
-  Eigen::VectorXd relative = Eigen::VectorXd::Zero(m);
-  for(int it = 0; it < max_iterations; ++it)
-  {
-    if(std::none_of(active.begin(), active.end(), [](bool a) { return a; })) break;
-    ++iterations;
-    const Eigen::MatrixXd AP = apply_A(P);
-    for(Eigen::Index j = 0; j < m; ++j)
-    {
-      if(!active[j]) continue;
-      const double pap = P.col(j).dot(AP.col(j));
-      if(!(pap > 0))
-      {
-        active[j] = false; // converged to roundoff: no descent direction left
-        continue;
-      }
-      const double alpha = rz[j] / pap;
-      X.col(j) += alpha * P.col(j);
-      R.col(j) -= alpha * AP.col(j);
-      relative[j] = R.col(j).norm() / b_norm[j];
-      if(relative[j] <= tolerance) active[j] = false;
-    }
-    Z = precondition(R);
-    project_primal(Z);
-    for(Eigen::Index j = 0; j < m; ++j)
-    {
-      if(!active[j]) continue;
-      const double rz_new = R.col(j).dot(Z.col(j));
-      const double beta = rz_new / rz[j];
-      rz[j] = rz_new;
-      P.col(j) = Z.col(j) + beta * P.col(j);
-    }
-  }
-  // True residuals (the recurrence drifts).
-  Eigen::MatrixXd true_residual = B - apply_A(X);
-  project_dual(true_residual);
-  for(Eigen::Index j = 0; j < m; ++j)
-    if(b_norm[j] > 0) residual = std::max(residual, true_residual.col(j).norm() / b_norm[j]);
-  return X;
-}
-
-} // namespace internal
+  // Unknowns: vertices in some face, all interior edges.
+  std::vector<int> vertices;
+  Sparse_spd_solver vertex_solver, edge_solver;
+};
 
 Full_spline_solver::Full_spline_solver(std::shared_ptr<const Hodge_solver> hodge, const Spline_options& options)
   : Spline_solver(std::shared_ptr<const Operator_matrices>(hodge, &hodge->operators()), hodge->harmonic_dimension(),
@@ -86,76 +29,121 @@ Full_spline_solver::~Full_spline_solver() = default;
 
 void Full_spline_solver::energy_changed()
 {
-  preconditioner_.reset();
-  Q_.resize(0, 0);
+  screened_.reset();
+  factored_ = false;
 }
 
 void Full_spline_solver::factor() const
 {
   const auto start = std::chrono::steady_clock::now();
   const Operator_matrices& ops = *operators_;
-  Q_ = ops.B() + omega_ * ops.S();
-  // sigma: 1e-10 of a bound on the largest eigenvalue of MX^-1 Q (Gershgorin), so
-  // that the factorisation stays positive definite on the harmonic fields, where Q
-  // vanishes, with ample margin over roundoff (~1e-16 of that bound).
-  const Eigen::VectorXd& masses = ops.field_masses();
-  double bound = 0;
-  for(int k = 0; k < Q_.outerSize(); ++k)
+  // W and W* (pinned) are factored by the Hodge solver on first use; solving an
+  // empty block makes sure they exist, so that their cost is counted here.
+  hodge_->solve_vertex_laplacian(Eigen::MatrixXd::Zero(ops.mesh().number_of_vertices(), 1));
+  hodge_->solve_edge_laplacian(Eigen::MatrixXd::Zero(ops.mesh().number_of_interior_edges(), 1));
+  if(omega_ > 0)
   {
-    double s = 0;
-    for(Eigen::SparseMatrix<double>::InnerIterator it(Q_, k); it; ++it) s += std::abs(it.value());
-    bound = std::max(bound, s / masses[k]);
+    screened_ = std::make_unique<Screened>();
+    const Intrinsic_mesh& mesh = ops.mesh();
+    std::vector<int> index(mesh.number_of_vertices(), -1);
+    for(int v = 0; v < mesh.number_of_vertices(); ++v)
+      if(!mesh.is_isolated_vertex(v))
+      {
+        index[v] = static_cast<int>(screened_->vertices.size());
+        screened_->vertices.push_back(v);
+      }
+    const int n = static_cast<int>(screened_->vertices.size());
+    std::vector<Eigen::Triplet<double>> t;
+    const Eigen::SparseMatrix<double>& W = ops.W();
+    for(int k = 0; k < W.outerSize(); ++k)
+      for(Eigen::SparseMatrix<double>::InnerIterator it(W, k); it; ++it)
+        if(index[it.row()] >= 0 && index[it.col()] >= 0) t.emplace_back(index[it.row()], index[it.col()], it.value());
+    for(int i = 0; i < n; ++i) t.emplace_back(i, i, omega_ * ops.vertex_masses()[screened_->vertices[i]]);
+    Eigen::SparseMatrix<double> A(n, n);
+    A.setFromTriplets(t.begin(), t.end());
+    screened_->vertex_solver.factor(A, "W + omega M (full spline)");
+    const Eigen::VectorXd edge_masses = ops.all_to_interior_edges(ops.edge_masses());
+    Eigen::SparseMatrix<double> A_star = ops.W_star();
+    for(int i = 0; i < A_star.rows(); ++i) A_star.coeffRef(i, i) += omega_ * edge_masses[i];
+    screened_->edge_solver.factor(A_star, "W* + omega M* (full spline)");
   }
-  const double sigma = 1e-10 * bound;
-  Eigen::SparseMatrix<double> P = Q_;
-  P += sigma * ops.MX();
-  preconditioner_ = std::make_unique<Sparse_spd_solver>();
-  preconditioner_->factor(P, "B + omega S + sigma MX (full spline)");
-  statistics_.factor_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  factored_ = true;
+  statistics_.factor_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+Eigen::MatrixXd Full_spline_solver::apply_energy(const Eigen::MatrixXd& X) const
+{
+  const Operator_matrices& ops = *operators_;
+  const Eigen::MatrixXd SX = ops.S() * X;
+  Eigen::MatrixXd result = ops.S() * (ops.field_masses().cwiseInverse().asDiagonal() * SX);
+  if(omega_ > 0) result += omega_ * SX;
+  return result;
 }
 
 void Full_spline_solver::pull_back(std::vector<Row>& rows) const
 {
   if(rows.empty()) return;
-  if(!preconditioner_) factor();
+  if(!factored_) factor();
   const auto start = std::chrono::steady_clock::now();
-  const int n = space_dimension();
+  const Operator_matrices& ops = *operators_;
   const int m = static_cast<int>(rows.size());
-  const Eigen::VectorXd& masses = operators_->field_masses();
-  const Eigen::MatrixXd* Uh = harmonic_dimension() > 0 ? &hodge_->harmonic_basis() : nullptr;
-  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(n, m);
+  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(space_dimension(), m);
   for(int j = 0; j < m; ++j)
     for(const auto& e : rows[j].row.entries) B(e.first, j) += e.second;
-  // Primal vectors are made MX-orthogonal to the harmonic fields; dual vectors
-  // (residuals, right-hand sides) orthogonal to them in the Euclidean sense.
-  auto project_primal = [&](Eigen::MatrixXd& X) {
-    if(Uh) X -= *Uh * (Uh->transpose() * masses.asDiagonal() * X);
-  };
-  auto project_dual = [&](Eigen::MatrixXd& X) {
-    if(Uh) X -= masses.asDiagonal() * (*Uh * (Uh->transpose() * X));
-  };
-  auto apply_Q = [&](const Eigen::MatrixXd& X) -> Eigen::MatrixXd { return Q_ * X; };
-  auto precondition = [&](const Eigen::MatrixXd& R) -> Eigen::MatrixXd { return preconditioner_->solve(R); };
-  int iterations = 0;
-  double residual = 0;
-  const Eigen::MatrixXd Y = internal::projected_block_cg(apply_Q, precondition, project_primal, project_dual, B,
-                                                         pull_back_tolerance, 200, iterations, residual);
+
+  const Eigen::VectorXd& M = ops.vertex_masses();
+  const Eigen::VectorXd M_star = ops.all_to_interior_edges(ops.edge_masses());
+  // Exact part: f from W f = G^T MX u = G^T r^T, then W q = M f, (W + omega M) p = M q.
+  const Eigen::MatrixXd f = hodge_->solve_vertex_laplacian(ops.G().transpose() * B);
+  const Eigen::MatrixXd q = hodge_->solve_vertex_laplacian(M.asDiagonal() * f);
+  Eigen::MatrixXd p;
+  if(omega_ > 0)
+  {
+    const std::vector<int>& vs = screened_->vertices;
+    Eigen::MatrixXd rhs(vs.size(), m);
+    for(std::size_t i = 0; i < vs.size(); ++i) rhs.row(i) = M[vs[i]] * q.row(vs[i]);
+    const Eigen::MatrixXd x = screened_->vertex_solver.solve(rhs);
+    p = Eigen::MatrixXd::Zero(M.size(), m);
+    for(std::size_t i = 0; i < vs.size(); ++i) p.row(vs[i]) = x.row(i);
+  }
+  else
+    p = hodge_->solve_vertex_laplacian(M.asDiagonal() * q);
+  Eigen::MatrixXd Y = ops.G() * p;
+  // Coexact part: g from W* g = -G*^T J MX u = -G*^T J r^T, then the same two steps.
+  Eigen::MatrixXd JB(B.rows(), m);
+  for(int j = 0; j < m; ++j) JB.col(j) = ops.rotate(B.col(j));
+  const Eigen::MatrixXd g = hodge_->solve_edge_laplacian(-(ops.G_star_interior().transpose() * JB));
+  const Eigen::MatrixXd q_star = hodge_->solve_edge_laplacian(M_star.asDiagonal() * g);
+  const Eigen::MatrixXd p_star = omega_ > 0 ? screened_->edge_solver.solve(Eigen::MatrixXd(M_star.asDiagonal() * q_star))
+                                            : hodge_->solve_edge_laplacian(M_star.asDiagonal() * q_star);
+  const Eigen::MatrixXd Gp = ops.G_star_interior() * p_star;
+  for(int j = 0; j < m; ++j) Y.col(j) += ops.rotate(Gp.col(j));
+
+  // Harmonic rows, and the residual of (B + omega S) y = Pi r^T as evidence.
+  const int nh = harmonic_dimension();
+  Eigen::MatrixXd target = B;
+  if(nh > 0)
+  {
+    const Eigen::MatrixXd& Uh = hodge_->harmonic_basis();
+    const Eigen::MatrixXd H = Uh.transpose() * B;
+    target -= ops.field_masses().asDiagonal() * (Uh * H);
+    for(int j = 0; j < m; ++j) rows[j].harmonic = H.col(j);
+  }
+  const Eigen::MatrixXd residual = apply_energy(Y) - target;
   for(int j = 0; j < m; ++j)
   {
     rows[j].y = Y.col(j);
-    rows[j].harmonic = Uh ? Eigen::VectorXd(Uh->transpose() * B.col(j)) : Eigen::VectorXd(0);
+    if(nh == 0) rows[j].harmonic.resize(0);
+    const double norm = target.col(j).norm();
+    if(norm > 0) statistics_.residual = std::max(statistics_.residual, residual.col(j).norm() / norm);
   }
-  statistics_.iterations = std::max(statistics_.iterations, iterations);
-  statistics_.residual = std::max(statistics_.residual, residual);
   statistics_.pull_back_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 double Full_spline_solver::energy(const Eigen::VectorXd& x) const
 {
   if(x.squaredNorm() == 0) return 0;
-  if(Q_.rows() == 0) factor();
-  return x.dot(Q_ * x);
+  return x.dot(apply_energy(x).col(0));
 }
 
 void Full_spline_solver::add_harmonic(const Eigen::VectorXd& z, Eigen::VectorXd& x) const

@@ -96,7 +96,7 @@ int Hodge_solver::harmonic_dimension() const { return ops_->mesh().topology().ha
 bool Hodge_solver::has_potential_factorization() const { return impl_->vertex_system.has_value(); }
 bool Hodge_solver::has_copotential_factorization() const { return impl_->edge_system.has_value(); }
 
-Eigen::MatrixXd Hodge_solver::potentials(const Eigen::MatrixXd& fields) const
+Eigen::MatrixXd Hodge_solver::solve_vertex_laplacian(const Eigen::MatrixXd& b) const
 {
   const Intrinsic_mesh& mesh = ops_->mesh();
   const int nv = mesh.number_of_vertices();
@@ -118,15 +118,14 @@ Eigen::MatrixXd Hodge_solver::potentials(const Eigen::MatrixXd& fields) const
     system.solver.factor(principal_submatrix(ops_->W(), system.unknown, system.size), "the cotan matrix W");
     impl_->vertex_system = std::move(system);
   }
-  const Eigen::MatrixXd rhs = ops_->G().transpose() * (ops_->field_masses().asDiagonal() * fields);
-  Eigen::MatrixXd f = impl_->vertex_system->solve(rhs);
+  Eigen::MatrixXd f = impl_->vertex_system->solve(b);
   std::vector<int> component(nv);
   for(int v = 0; v < nv; ++v) component[v] = mesh.vertex_component(v);
   remove_group_means(f, component, mesh.topology().number_of_components(), ops_->vertex_masses());
   return f;
 }
 
-Eigen::MatrixXd Hodge_solver::copotentials(const Eigen::MatrixXd& fields) const
+Eigen::MatrixXd Hodge_solver::solve_edge_laplacian(const Eigen::MatrixXd& b) const
 {
   const Intrinsic_mesh& mesh = ops_->mesh();
   const int ni = mesh.number_of_interior_edges();
@@ -150,12 +149,7 @@ Eigen::MatrixXd Hodge_solver::copotentials(const Eigen::MatrixXd& fields) const
                          "the Crouzeix-Raviart matrix W*");
     impl_->edge_system = std::move(system);
   }
-  // rhs = -G*^T J MX v, one column per field.
-  Eigen::MatrixXd rotated(fields.rows(), fields.cols());
-  for(Eigen::Index j = 0; j < fields.cols(); ++j)
-    rotated.col(j) = ops_->rotate(ops_->field_masses().cwiseProduct(fields.col(j)));
-  const Eigen::MatrixXd rhs = -(ops_->G_star_interior().transpose() * rotated);
-  Eigen::MatrixXd g = impl_->edge_system->solve(rhs);
+  Eigen::MatrixXd g = impl_->edge_system->solve(b);
   std::vector<int> closed_component(ni, -1);
   Eigen::VectorXd mass(ni);
   for(int i = 0; i < ni; ++i)
@@ -166,8 +160,24 @@ Eigen::MatrixXd Hodge_solver::copotentials(const Eigen::MatrixXd& fields) const
     mass[i] = ops_->edge_masses()[e];
   }
   remove_group_means(g, closed_component, static_cast<int>(components.size()), mass);
+  return g;
+}
+
+Eigen::MatrixXd Hodge_solver::potentials(const Eigen::MatrixXd& fields) const
+{
+  return solve_vertex_laplacian(ops_->G().transpose() * (ops_->field_masses().asDiagonal() * fields));
+}
+
+Eigen::MatrixXd Hodge_solver::copotentials(const Eigen::MatrixXd& fields) const
+{
+  const Intrinsic_mesh& mesh = ops_->mesh();
+  // rhs = -G*^T J MX v, one column per field.
+  Eigen::MatrixXd rotated(fields.rows(), fields.cols());
+  for(Eigen::Index j = 0; j < fields.cols(); ++j)
+    rotated.col(j) = ops_->rotate(ops_->field_masses().cwiseProduct(fields.col(j)));
+  const Eigen::MatrixXd g = solve_edge_laplacian(-(ops_->G_star_interior().transpose() * rotated));
   Eigen::MatrixXd all = Eigen::MatrixXd::Zero(mesh.number_of_edges(), fields.cols());
-  for(int i = 0; i < ni; ++i) all.row(mesh.interior_edges()[i]) = g.row(i);
+  for(int i = 0; i < mesh.number_of_interior_edges(); ++i) all.row(mesh.interior_edges()[i]) = g.row(i);
   return all;
 }
 

@@ -2,16 +2,82 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 
 #include <CGAL/Tangent_vector_fields/Soft_field_design.h>
-#include <CGAL/Tangent_vector_fields/Full_spline_solver.h> // projected_block_cg
+#include <CGAL/Tangent_vector_fields/internal/projected_block_cg.h>
 #include <CGAL/Tangent_vector_fields/errors.h>
 
 #include <Eigen/Eigenvalues>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
 namespace CGAL {
 namespace Tangent_vector_fields {
+
+namespace internal {
+
+Eigen::MatrixXd projected_block_cg(const std::function<Eigen::MatrixXd(const Eigen::MatrixXd&)>& apply_A,
+                                   const std::function<Eigen::MatrixXd(const Eigen::MatrixXd&)>& precondition,
+                                   const std::function<void(Eigen::MatrixXd&)>& project_primal,
+                                   const std::function<void(Eigen::MatrixXd&)>& project_dual,
+                                   const Eigen::MatrixXd& B, double tolerance, int max_iterations,
+                                   int& iterations, double& residual)
+{
+  const Eigen::Index m = B.cols();
+  Eigen::MatrixXd R = B;
+  project_dual(R);
+  const Eigen::VectorXd b_norm = R.colwise().norm().transpose();
+  // Start from the preconditioner's answer: it is already accurate in most directions.
+  Eigen::MatrixXd X = Eigen::MatrixXd::Zero(B.rows(), m);
+  Eigen::MatrixXd Z = precondition(R);
+  project_primal(Z);
+  Eigen::MatrixXd P = Z;
+  Eigen::VectorXd rz = (R.cwiseProduct(Z)).colwise().sum().transpose();
+  std::vector<bool> active(m);
+  for(Eigen::Index j = 0; j < m; ++j) active[j] = b_norm[j] > 0;
+  iterations = 0;
+  residual = 0;
+  Eigen::VectorXd relative = Eigen::VectorXd::Zero(m);
+  for(int it = 0; it < max_iterations; ++it)
+  {
+    if(std::none_of(active.begin(), active.end(), [](bool a) { return a; })) break;
+    ++iterations;
+    const Eigen::MatrixXd AP = apply_A(P);
+    for(Eigen::Index j = 0; j < m; ++j)
+    {
+      if(!active[j]) continue;
+      const double pap = P.col(j).dot(AP.col(j));
+      if(!(pap > 0))
+      {
+        active[j] = false; // converged to roundoff: no descent direction left
+        continue;
+      }
+      const double alpha = rz[j] / pap;
+      X.col(j) += alpha * P.col(j);
+      R.col(j) -= alpha * AP.col(j);
+      relative[j] = R.col(j).norm() / b_norm[j];
+      if(relative[j] <= tolerance) active[j] = false;
+    }
+    Z = precondition(R);
+    project_primal(Z);
+    for(Eigen::Index j = 0; j < m; ++j)
+    {
+      if(!active[j]) continue;
+      const double rz_new = R.col(j).dot(Z.col(j));
+      const double beta = rz_new / rz[j];
+      rz[j] = rz_new;
+      P.col(j) = Z.col(j) + beta * P.col(j);
+    }
+  }
+  // True residuals (the recurrence drifts).
+  Eigen::MatrixXd true_residual = B - apply_A(X);
+  project_dual(true_residual);
+  for(Eigen::Index j = 0; j < m; ++j)
+    if(b_norm[j] > 0) residual = std::max(residual, true_residual.col(j).norm() / b_norm[j]);
+  return X;
+}
+
+} // namespace internal
 
 namespace {
 // As in the spline solvers: a harmonic direction whose constraint energy is below

@@ -80,6 +80,7 @@ void Spline_solver::insert(const std::vector<Field_constraint>& constraints, con
         for(int i = 0; i < n; ++i) implied += alpha[i] * rows_[i].row.value;
       }
       const double residual = std::abs(rows[j].row.value - implied);
+      const std::string hint = dependency_hint();
       // All or nothing: take back the rows of this call.
       if(n > first) system_->remove(first, n - first);
       rows_.resize(first);
@@ -88,7 +89,6 @@ void Spline_solver::insert(const std::vector<Field_constraint>& constraints, con
         << independence << " < tolerance " << options_.dependency_tolerance << "); they imply the value " << implied
         << " where " << rows[j].row.value << " is asked: residual " << residual;
       if(kappa == 0) s << " (the row is zero on every field the solver can represent)";
-      const std::string hint = dependency_hint();
       if(!hint.empty()) s << "; " << hint;
       throw Infeasible_constraints(s.str(), independence, residual);
     }

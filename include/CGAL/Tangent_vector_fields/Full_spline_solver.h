@@ -17,28 +17,28 @@
 namespace CGAL {
 namespace Tangent_vector_fields {
 
-/// How accurately the full solver's pull-backs were computed.
+/// Cost and accuracy of the full solver's pull-backs.
 struct Full_solve_statistics
 {
-  double factor_seconds = 0;    ///< assembling `B + omega S` and factoring it (last time)
+  double factor_seconds = 0;    ///< factorisations (first pull-back, and after a new omega)
   double pull_back_seconds = 0; ///< all pull-backs so far
-  int iterations = 0;           ///< largest number of PCG iterations of a pull-back batch
-  double residual = 0;          ///< largest final relative residual of a pull-back
+  double residual = 0;          ///< largest `|(B + omega S) y - Pi r^T| / |Pi r^T|` of a pull-back
 };
 
-/// \brief The range-space method on the full field space.
+/// \brief The range-space method on the full field space, through the Hodge structure.
 ///
-/// `Q = B + omega S` is singular on the harmonic fields (and badly conditioned:
-/// `cond ~ nf^2`), so pull-backs `y = Q^+ r^T` are computed by conjugate gradients on
-/// the fields `MX`-orthogonal to the harmonic ones, preconditioned by a CHOLMOD
-/// factorisation of `Q + sigma MX` with a tiny `sigma` (1e-10 of the largest
-/// eigenvalue bound, enough to keep the factorisation positive definite).  The
-/// preconditioned operator has all but a handful of eigenvalues at 1, so CG reaches a
-/// relative residual of 1e-12 in a few iterations: the answer is the exact spline to
-/// solver precision, not the spline of a regularised energy.
-///
-/// `B` is formed explicitly (`S MX^-1 S`); the factorisation is built on the first
-/// pull-back and reused for every constraint until `omega` changes.
+/// `Q = B + omega S = MX (L^2 + omega L)` is singular on the harmonic fields and, as a
+/// fourth-order operator, badly conditioned (`cond ~ nf^2`).  It is never formed.
+/// Since `L G p = G M^-1 W p` and `L J G* p = J G* M*^-1 W* p`, a pull-back
+/// `y = Q^+ Pi r^T` splits into scalar second-order solves: with `u = MX^-1 r^T`
+/// decomposed as `G f + J G* g + h`,
+/// \code
+///   W q = M f,    (W + omega M) p = M q,       y_exact   = G p
+///   W* q* = M* g, (W* + omega M*) p* = M* q*,  y_coexact = J G* p*
+/// \endcode
+/// (with `omega = 0` the second solve is again `W`, `W*`).  These reuse the Hodge
+/// solver's CHOLMOD factorisations of `W` and `W*`, plus the screened ones when
+/// `omega > 0`: exact to solver precision, and far cheaper than factoring `B`.
 class Full_spline_solver : public Spline_solver
 {
 public:
@@ -48,8 +48,6 @@ public:
 
   Eigen::VectorXd field() const override { return solution(); }
   const Full_solve_statistics& statistics() const { return statistics_; }
-  /// Relative residual the pull-backs are iterated to.
-  static constexpr double pull_back_tolerance = 1e-12;
 
 protected:
   void pull_back(std::vector<Row>& rows) const override;
@@ -60,27 +58,17 @@ protected:
   void energy_changed() override;
 
 private:
+  struct Screened;
   void factor() const;
+  // (B + omega S) x without forming B: S MX^-1 S x + omega S x.
+  Eigen::MatrixXd apply_energy(const Eigen::MatrixXd& X) const;
 
   std::shared_ptr<const Hodge_solver> hodge_;
-  mutable Eigen::SparseMatrix<double> Q_;
-  mutable std::unique_ptr<Sparse_spd_solver> preconditioner_;
+  mutable std::unique_ptr<Screened> screened_; // W + omega M, W* + omega M* (omega > 0)
+  mutable bool factored_ = false;
   mutable Full_solve_statistics statistics_;
 };
 
-namespace internal {
-/// Block conjugate gradients (independent columns sharing the products) for
-/// `A X = B` on a subspace: `A` symmetric positive semi-definite, positive definite
-/// on the subspace; `precondition` an SPD approximation of `A^-1`; `project_primal`
-/// and `project_dual` remove the excluded directions from iterates and residuals.
-/// Returns the number of iterations; `residual` the largest final relative residual.
-Eigen::MatrixXd projected_block_cg(const std::function<Eigen::MatrixXd(const Eigen::MatrixXd&)>& apply_A,
-                                   const std::function<Eigen::MatrixXd(const Eigen::MatrixXd&)>& precondition,
-                                   const std::function<void(Eigen::MatrixXd&)>& project_primal,
-                                   const std::function<void(Eigen::MatrixXd&)>& project_dual,
-                                   const Eigen::MatrixXd& B, double tolerance, int max_iterations,
-                                   int& iterations, double& residual);
-} // namespace internal
 
 } // namespace Tangent_vector_fields
 } // namespace CGAL

@@ -62,6 +62,14 @@ public:
   /// `g` (all edges, 0 on the boundary) with `W* g = -G*^T J MX v` per column.
   Eigen::MatrixXd copotentials(const Eigen::MatrixXd& fields) const;
 
+  /// Solves `W f = b` for each column (`nv x k`); each column must sum to zero over
+  /// every component (then the system is consistent).  Returns the solution with
+  /// zero `M`-mean per component; vertices in no face get 0.
+  Eigen::MatrixXd solve_vertex_laplacian(const Eigen::MatrixXd& b) const;
+  /// Solves `W* g = b` on interior edges (`ne_int x k`); on closed components each
+  /// column must sum to zero.  Returns the solution with zero `M*`-mean per closed component.
+  Eigen::MatrixXd solve_edge_laplacian(const Eigen::MatrixXd& b) const;
+
   /// Dimension of the harmonic space predicted by the topology.
   int harmonic_dimension() const;
   /// An `MX`-orthonormal basis of the harmonic fields (`2nf x dim`), computed on
