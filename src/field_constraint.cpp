@@ -114,6 +114,48 @@ std::string Field_constraint::describe() const
   return s.str();
 }
 
+std::array<double, 3> barycentric_coordinates(const Intrinsic_mesh& mesh, int face, const std::array<double, 3>& point)
+{
+  if(face < 0 || face >= mesh.number_of_faces())
+    throw Invalid_input("face index " + std::to_string(face) + " out of range for a point");
+  if(!std::isfinite(point[0]) || !std::isfinite(point[1]) || !std::isfinite(point[2]))
+    throw Invalid_input("non-finite point in face " + std::to_string(face));
+  // In the face's own frame, corner 0 at the origin, corner 1 at (l, 0), corner 2 at (x, y).
+  const auto& o = mesh.position(mesh.face_vertices(face)[0]);
+  const std::array<double, 2> p = mesh.to_frame(face, {{point[0] - o[0], point[1] - o[1], point[2] - o[2]}});
+  const auto& q1 = mesh.position(mesh.face_vertices(face)[1]);
+  const auto& q2 = mesh.position(mesh.face_vertices(face)[2]);
+  const std::array<double, 2> a = mesh.to_frame(face, {{q1[0] - o[0], q1[1] - o[1], q1[2] - o[2]}});
+  const std::array<double, 2> b = mesh.to_frame(face, {{q2[0] - o[0], q2[1] - o[1], q2[2] - o[2]}});
+  const double det = a[0] * b[1] - a[1] * b[0];
+  double w1 = (p[0] * b[1] - p[1] * b[0]) / det, w2 = (a[0] * p[1] - a[1] * p[0]) / det;
+  double w0 = 1 - w1 - w2;
+  // Clamp into the face and renormalise.
+  w0 = std::max(w0, 0.), w1 = std::max(w1, 0.), w2 = std::max(w2, 0.);
+  const double sum = w0 + w1 + w2;
+  return {{w0 / sum, w1 / sum, w2 / sum}};
+}
+
+std::array<double, 3> barycentric_in_face_order(const Intrinsic_mesh& mesh, int face, const std::array<int, 3>& vertices,
+                                                const std::array<double, 3>& weights)
+{
+  if(face < 0 || face >= mesh.number_of_faces())
+    throw Invalid_input("face index " + std::to_string(face) + " out of range for a point");
+  std::array<double, 3> out{{0, 0, 0}};
+  std::array<bool, 3> used{{false, false, false}};
+  for(int k = 0; k < 3; ++k)
+  {
+    int found = -1;
+    for(int j = 0; j < 3; ++j)
+      if(!used[j] && mesh.face_vertices(face)[j] == vertices[k]) found = j;
+    if(found < 0)
+      throw Invalid_input("vertex " + std::to_string(vertices[k]) + " is not a vertex of face " + std::to_string(face));
+    used[found] = true;
+    out[found] = weights[k];
+  }
+  return out;
+}
+
 std::vector<Constraint_row> constraint_rows(const Operator_matrices& ops, const Field_constraint& c)
 {
   const Intrinsic_mesh& mesh = ops.mesh();

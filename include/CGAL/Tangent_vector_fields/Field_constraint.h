@@ -99,6 +99,17 @@ struct Field_constraint
   std::string describe() const;
 };
 
+/// Barycentric coordinates (in the order of `mesh.face_vertices(face)`) of the
+/// orthogonal projection of `point` onto the plane of `face`, clamped into the face.
+/// \throws Invalid_input for a face out of range or a non-finite point.
+std::array<double, 3> barycentric_coordinates(const Intrinsic_mesh& mesh, int face, const std::array<double, 3>& point);
+
+/// Reorders barycentric `weights` given for the vertices `vertices` (any order of the
+/// face's three vertices) into the order of `mesh.face_vertices(face)`.
+/// \throws Invalid_input if `vertices` are not the vertices of `face`.
+std::array<double, 3> barycentric_in_face_order(const Intrinsic_mesh& mesh, int face, const std::array<int, 3>& vertices,
+                                                const std::array<double, 3>& weights);
+
 /// A sparse row of `C~` (entries `(index in 0..2nf-1, coefficient)`) with its value.
 struct Constraint_row
 {

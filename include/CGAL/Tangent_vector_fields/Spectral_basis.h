@@ -104,6 +104,7 @@ public:
   const Operators& operators() const { return operators_; }
   /// The basis on frame coordinates (eigenvalues, eigenfunctions, report).
   const Eigenfield_basis& basis() const { return *basis_; }
+  std::shared_ptr<const Eigenfield_basis> shared_basis() const { return basis_; }
   int size() const { return basis_->size(); }
   double eigenvalue(int k) const { return basis_->eigenvalue(k); }
   Eigenfield_type type(int k) const { return basis_->type(k); }

@@ -27,3 +27,6 @@ TVF_add_named_parameter(number_of_coexact_eigenfields_t, number_of_coexact_eigen
 TVF_add_named_parameter(maximum_eigenvalue_t, maximum_eigenvalue, maximum_eigenvalue)
 TVF_add_named_parameter(eigensolver_tolerance_t, eigensolver_tolerance, eigensolver_tolerance)
 TVF_add_named_parameter(progress_callback_t, progress_callback, progress_callback)
+
+// Field design
+TVF_add_named_parameter(spline_tension_t, spline_tension, spline_tension)

@@ -1,0 +1,227 @@
+// Copyright (c) 2026 The Tangent_vector_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#include <CGAL/Tangent_vector_fields/constraint_file_io.h>
+#include <CGAL/Tangent_vector_fields/errors.h>
+
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <ostream>
+#include <sstream>
+
+namespace CGAL {
+namespace Tangent_vector_fields {
+
+namespace {
+
+typedef boost::property_tree::ptree Tree;
+
+struct Reader
+{
+  const Tree& node;
+  int position;
+
+  [[noreturn]] void fail(const std::string& what) const
+  {
+    throw Invalid_input("constraint " + std::to_string(position) + ": " + what);
+  }
+  bool has(const char* key) const { return node.count(key) > 0; }
+  double number(const char* key) const
+  {
+    if(!has(key)) fail(std::string("missing \"") + key + "\"");
+    try
+    {
+      const double x = node.get<double>(key);
+      if(!std::isfinite(x)) fail(std::string("\"") + key + "\" is not finite");
+      return x;
+    }
+    catch(const boost::property_tree::ptree_bad_data&)
+    {
+      fail(std::string("\"") + key + "\" is not a number");
+    }
+  }
+  int index(const char* key) const
+  {
+    const double x = number(key);
+    if(x != std::floor(x) || x < 0 || x > 2e9) fail(std::string("\"") + key + "\" is not a valid index");
+    return static_cast<int>(x);
+  }
+  std::array<double, 3> triple(const char* key) const
+  {
+    if(!has(key)) fail(std::string("missing \"") + key + "\"");
+    std::array<double, 3> v{{0, 0, 0}};
+    int k = 0;
+    for(const auto& child : node.get_child(key))
+    {
+      if(!child.first.empty() || k == 3) fail(std::string("\"") + key + "\" must be an array of 3 numbers");
+      try
+      {
+        v[k++] = child.second.get_value<double>();
+      }
+      catch(const boost::property_tree::ptree_bad_data&)
+      {
+        fail(std::string("\"") + key + "\" must be an array of 3 numbers");
+      }
+    }
+    if(k != 3) fail(std::string("\"") + key + "\" must be an array of 3 numbers");
+    for(double x : v)
+      if(!std::isfinite(x)) fail(std::string("\"") + key + "\" has a non-finite entry");
+    return v;
+  }
+  // Point in a face: "point" (3D) or "vertices" + "barycentric".
+  std::array<double, 3> point(const Intrinsic_mesh& mesh, int face) const
+  {
+    if(face >= mesh.number_of_faces()) fail("face " + std::to_string(face) + " out of range");
+    if(has("point")) return barycentric_coordinates(mesh, face, triple("point"));
+    if(has("barycentric"))
+    {
+      const std::array<double, 3> w = triple("barycentric");
+      const std::array<double, 3> v = triple("vertices");
+      try
+      {
+        return barycentric_in_face_order(mesh, face, {{int(v[0]), int(v[1]), int(v[2])}}, w);
+      }
+      catch(const Invalid_input& e)
+      {
+        fail(e.what());
+      }
+    }
+    fail("a point in a face needs \"point\" or \"vertices\" and \"barycentric\"");
+  }
+};
+
+Field_constraint parse(const Tree& node, int position, const Intrinsic_mesh& mesh)
+{
+  const Reader r{node, position};
+  const std::string type = node.get<std::string>("type", "");
+  if(type == "vector") return Field_constraint::vector_in_face(r.index("face"), r.triple("vector"));
+  if(type == "direction") return Field_constraint::direction_in_face(r.index("face"), r.triple("direction"));
+  if(type == "divergence")
+  {
+    if(r.has("vertex")) return Field_constraint::divergence_at_vertex(r.index("vertex"), r.number("value"));
+    const int face = r.index("face");
+    return Field_constraint::divergence_at_point(face, r.point(mesh, face), r.number("value"));
+  }
+  if(type == "curl")
+  {
+    if(r.has("edge")) return Field_constraint::curl_at_edge(r.index("edge"), r.number("value"));
+    const int face = r.index("face");
+    return Field_constraint::curl_at_point(face, r.point(mesh, face), r.number("value"));
+  }
+  if(type == "boundary_alignment")
+  {
+    try
+    {
+      return Field_constraint::boundary_alignment(mesh, r.index("edge"));
+    }
+    catch(const Invalid_input& e)
+    {
+      r.fail(e.what());
+    }
+  }
+  r.fail("unknown type \"" + type + "\" (vector, direction, divergence, curl, boundary_alignment)");
+}
+
+} // namespace
+
+Constraint_file read_constraint_file(std::istream& in, const Operator_matrices& operators)
+{
+  const Intrinsic_mesh& mesh = operators.mesh();
+  Tree root;
+  try
+  {
+    boost::property_tree::read_json(in, root);
+  }
+  catch(const boost::property_tree::json_parser_error& e)
+  {
+    throw Invalid_input("constraint file: " + e.message() + " at line " + std::to_string(e.line()));
+  }
+  Constraint_file file;
+  if(root.count("omega"))
+  {
+    try
+    {
+      file.omega = root.get<double>("omega");
+    }
+    catch(const boost::property_tree::ptree_bad_data&)
+    {
+      throw Invalid_input("constraint file: omega is not a number");
+    }
+    file.has_omega = true;
+    if(!std::isfinite(file.omega) || file.omega < 0) throw Invalid_input("constraint file: omega must be >= 0");
+  }
+  if(!root.count("constraints")) throw Invalid_input("constraint file: no \"constraints\" array");
+  int position = 0;
+  for(const auto& child : root.get_child("constraints"))
+  {
+    Field_constraint c = parse(child.second, position, mesh);
+    // Validates indices and values now, so that errors name the constraint.
+    try
+    {
+      constraint_rows(operators, c);
+    }
+    catch(const Invalid_input& e)
+    {
+      throw Invalid_input("constraint " + std::to_string(position) + ": " + e.what());
+    }
+    const double weight = child.second.get<double>("weight", 1.0);
+    if(!std::isfinite(weight) || !(weight > 0))
+      throw Invalid_input("constraint " + std::to_string(position) + ": the weight must be positive");
+    file.constraints.push_back(c);
+    file.weights.push_back(weight);
+    ++position;
+  }
+  return file;
+}
+
+Constraint_file read_constraint_file(const std::string& path, const Operator_matrices& operators)
+{
+  std::ifstream in(path);
+  if(!in) throw Invalid_input("cannot open constraint file " + path);
+  return read_constraint_file(in, operators);
+}
+
+void write_constraint_file(std::ostream& out, const Constraint_file& file, const Intrinsic_mesh& mesh)
+{
+  out << std::setprecision(17) << "{\n  \"omega\": " << file.omega << ",\n  \"constraints\": [";
+  auto triple = [](const std::array<double, 3>& v) {
+    std::ostringstream s;
+    s << std::setprecision(17) << "[" << v[0] << ", " << v[1] << ", " << v[2] << "]";
+    return s.str();
+  };
+  for(std::size_t i = 0; i < file.constraints.size(); ++i)
+  {
+    const Field_constraint& c = file.constraints[i];
+    out << (i ? ",\n    " : "\n    ") << "{";
+    switch(c.kind)
+    {
+    case Constraint_kind::vector: out << "\"type\": \"vector\", \"face\": " << c.face << ", \"vector\": " << triple(c.vector); break;
+    case Constraint_kind::direction:
+      out << "\"type\": \"direction\", \"face\": " << c.face << ", \"direction\": " << triple(c.vector);
+      break;
+    case Constraint_kind::divergence:
+    case Constraint_kind::curl:
+      out << "\"type\": \"" << (c.kind == Constraint_kind::divergence ? "divergence" : "curl") << "\", ";
+      if(c.vertex >= 0) out << "\"vertex\": " << c.vertex;
+      else if(c.edge >= 0) out << "\"edge\": " << c.edge;
+      else
+      {
+        const auto& v = mesh.face_vertices(c.face);
+        out << "\"face\": " << c.face << ", \"vertices\": [" << v[0] << ", " << v[1] << ", " << v[2]
+            << "], \"barycentric\": " << triple(c.barycentric);
+      }
+      out << ", \"value\": " << c.value;
+      break;
+    }
+    if(i < file.weights.size() && file.weights[i] != 1) out << ", \"weight\": " << file.weights[i];
+    out << "}";
+  }
+  out << "\n  ]\n}\n";
+}
+
+} // namespace Tangent_vector_fields
+} // namespace CGAL
