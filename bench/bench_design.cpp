@@ -229,10 +229,11 @@ int main(int argc, char** argv)
 
     std::printf("== %s: %d faces, %d harmonic fields; basis of %d: %.1f s (%s)\n", s.key.c_str(), faces,
                 hodge->harmonic_dimension(), basis->size(), basis_seconds, loaded ? "loaded" : "computed");
-    std::printf("full TVFS: factor %.2f s, 54 pull-backs %.2f s (residual %.1e), total %.2f s;"
-                " add 1 constraint %.3f s; value edit %.1f ms\n",
+    std::printf("full TVFS: factor %.2f s (W, W* shared with the basis computation), 54 pull-backs %.2f s"
+                " (second-order residual %.1e, through B %.1e), total %.2f s; add 1 constraint %.3f s;"
+                " value edit %.1f ms\n",
                 full.statistics().factor_seconds, full.statistics().pull_back_seconds, full.statistics().residual,
-                full_total, full_add, 1e3 * full_edit);
+                full.statistics().energy_residual, full_total, full_add, 1e3 * full_edit);
     std::printf("full soft: factor %.2f s, solve %.2f s, total %.2f s (CG residual %.1e)\n\n",
                 full_soft.factor_seconds(), full_soft.solve_seconds(), full_soft_total, full_soft.residual());
     std::printf("%6s | %9s %9s %9s %9s %8s | %9s %9s | %9s %8s %9s %9s %9s | %9s\n", "d", "setup", "edit", "add",

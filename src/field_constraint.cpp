@@ -161,7 +161,8 @@ std::vector<Constraint_row> constraint_rows(const Operator_matrices& ops, const 
   const Intrinsic_mesh& mesh = ops.mesh();
   check_finite(c);
   std::vector<Constraint_row> rows;
-  const double length_scale = std::sqrt(ops.face_areas().sum());
+  // Only divergence and curl rows need it (a sum over all faces: not for vector edits).
+  auto length_scale = [&ops]() { return std::sqrt(ops.face_areas().sum()); };
   switch(c.kind)
   {
   case Constraint_kind::vector:
@@ -215,7 +216,7 @@ std::vector<Constraint_row> constraint_rows(const Operator_matrices& ops, const 
       row = combine(parts);
     }
     row.value = c.value;
-    row.unit_area_scale = length_scale;
+    row.unit_area_scale = length_scale();
     rows.push_back(row);
     break;
   }
@@ -237,7 +238,7 @@ std::vector<Constraint_row> constraint_rows(const Operator_matrices& ops, const 
       row = combine(parts);
     }
     row.value = c.value;
-    row.unit_area_scale = length_scale;
+    row.unit_area_scale = length_scale();
     rows.push_back(row);
     break;
   }

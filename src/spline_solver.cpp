@@ -122,8 +122,23 @@ void Spline_solver::change(Constraint_id id, const Field_constraint& constraint)
   Entry& entry = it->second;
   if(same_place(entry.constraint, constraint))
   {
-    const std::vector<Constraint_row> rows = constraint_rows(*operators_, constraint);
-    for(int k = 0; k < entry.row_count; ++k) rows_[entry.first_row + k].row.value = rows[k].value;
+    // Only the values change: no new rows (the fast path of interactive edits).
+    if(constraint.kind == Constraint_kind::vector)
+    {
+      const Field_constraint& c = constraint;
+      const std::array<double, 2> a = operators_->mesh().to_frame(c.face, c.vector);
+      const double length = std::sqrt(c.vector[0] * c.vector[0] + c.vector[1] * c.vector[1] + c.vector[2] * c.vector[2]);
+      if(!std::isfinite(length)) throw Invalid_input("non-finite number in constraint: " + c.describe());
+      if(length > 0 && std::hypot(a[0], a[1]) <= 1e-8 * length)
+        throw Invalid_input("the vector is normal to its face: " + c.describe());
+      rows_[entry.first_row].row.value = a[0];
+      rows_[entry.first_row + 1].row.value = a[1];
+    }
+    else
+    {
+      if(!std::isfinite(constraint.value)) throw Invalid_input("non-finite number in constraint: " + constraint.describe());
+      rows_[entry.first_row].row.value = constraint.value;
+    }
     entry.constraint = constraint;
     solved_ = false;
     return;

@@ -22,7 +22,12 @@ struct Full_solve_statistics
 {
   double factor_seconds = 0;    ///< factorisations (first pull-back, and after a new omega)
   double pull_back_seconds = 0; ///< all pull-backs so far
-  double residual = 0;          ///< largest `|(B + omega S) y - Pi r^T| / |Pi r^T|` of a pull-back
+  /// Largest relative residual `|A Z - B|_F / |B|_F` of the second-order solves of a block
+  /// of pull-backs (`A` = `W`, `W*` or their screened forms): the solver precision.
+  double residual = 0;
+  /// Largest `|(B + omega S) y - Pi r^T| / |Pi r^T|`: the same accuracy seen through the
+  /// fourth-order operator, so about `eps cond(B)` larger (1e-6 at 20k faces, 1e-3 at 70k).
+  double energy_residual = 0;
 };
 
 /// \brief The range-space method on the full field space, through the Hodge structure.
