@@ -203,7 +203,7 @@ struct Separation_test
       if(s.line != line) return true;
       if(std::abs(s.arc - arc) < self_gap) return false;
       // While the forward part runs, its first samples are left to the loop-closure test.
-      if(forward && s.arc >= 0 && s.arc < test_distance) return false;
+      if(forward && s.arc >= 0 && s.arc < self_gap) return false;
       return true;
     });
   }

@@ -9,10 +9,13 @@
 
 #include <CGAL/Tangent_vector_fields/Discrete_operators.h>
 #include <CGAL/Tangent_vector_fields/Streamlines.h>
+#include <CGAL/Tangent_vector_fields/field_export.h>
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <fstream>
+#include <sstream>
 #include <cmath>
 #include <random>
 
@@ -497,4 +500,217 @@ TEST(Streamlines, BadArgumentsAreRefused)
   const TVF::Streamline s = TVF::trace_streamline(sphere, zero, *sphere.faces().begin(), sphere.point(Vertex_index(0)));
   EXPECT_EQ(s.points.size(), 1u);
   EXPECT_EQ(s.forward_stop, TVF::Streamline_stop::zero_field);
+}
+
+// ---------------------------------------------------------------------------
+// Exports
+
+namespace {
+
+std::string temporary_path(const std::string& name) { return ::testing::TempDir() + "tvf_visual_" + name; }
+
+std::vector<std::string> lines_of(const std::string& filename)
+{
+  std::ifstream in(filename);
+  std::vector<std::string> lines;
+  for(std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+} // namespace
+
+TEST(Exports, VtpRoundTripIsExact)
+{
+  Mesh sphere = make_icosphere(2);
+  jitter_vertices(sphere, 0.3, 2);
+  Field wind = ambient_field_map(sphere, "wind", 3);
+  Field gust = ambient_field_map(sphere, "gust", 4);
+  const std::string file = temporary_path("fields.vtp");
+  TVF::write_vtp(file, sphere, std::vector<std::pair<std::string, Field>>{{"wind", wind}, {"gust", gust}});
+  Field wind_back = field_map(sphere, "wind_back"), gust_back = field_map(sphere, "gust_back");
+  TVF::read_vtp(file, sphere, "wind", wind_back);
+  TVF::read_vtp(file, sphere, "gust", gust_back);
+  for(Face_index f : sphere.faces())
+  {
+    EXPECT_EQ(wind_back[f], wind[f]);
+    EXPECT_EQ(gust_back[f], gust[f]);
+  }
+  // The geometry and connectivity come back too, and the file names its active vectors.
+  std::ifstream in(file);
+  const TVF::Vtk_polydata data = TVF::read_vtk_polydata(in);
+  ASSERT_EQ(data.points.size(), sphere.number_of_vertices());
+  for(Vertex_index v : sphere.vertices())
+    EXPECT_EQ(data.points[std::size_t(v)], (P3{sphere.point(v).x(), sphere.point(v).y(), sphere.point(v).z()}));
+  ASSERT_EQ(data.polygons.size(), sphere.number_of_faces());
+  for(Face_index f : sphere.faces())
+  {
+    std::vector<int> corners;
+    for(Vertex_index v : vertices_around_face(sphere.halfedge(f), sphere)) corners.push_back(int(std::size_t(v)));
+    EXPECT_EQ(data.polygons[std::size_t(f)], corners);
+  }
+  bool header = false, active = false;
+  for(const std::string& line : lines_of(file))
+  {
+    header = header || line.find("<VTKFile type=\"PolyData\"") != std::string::npos;
+    active = active || line.find("<CellData Vectors=\"wind\">") != std::string::npos;
+  }
+  EXPECT_TRUE(header);
+  EXPECT_TRUE(active);
+  EXPECT_THROW(TVF::read_vtp(file, sphere, "missing", wind_back), TVF::Invalid_input);
+  Mesh other = make_icosphere(1);
+  Field other_field = field_map(other, "x");
+  EXPECT_THROW(TVF::read_vtp(file, other, "wind", other_field), TVF::Invalid_input);
+}
+
+TEST(Exports, VtpReaderRefusesWhatItCannotRead)
+{
+  auto read = [](const std::string& text) {
+    std::istringstream in(text);
+    return TVF::read_vtk_polydata(in);
+  };
+  const std::string head = "<VTKFile type=\"PolyData\" version=\"0.1\"><PolyData><Piece NumberOfPoints=\"1\" "
+                           "NumberOfPolys=\"0\"><Points><DataArray type=\"Float32\" NumberOfComponents=\"3\" ";
+  const TVF::Vtk_polydata ok = read(head + "format=\"ascii\">1 2.5 -3</DataArray></Points></Piece></PolyData></VTKFile>");
+  ASSERT_EQ(ok.points.size(), 1u);
+  EXPECT_EQ(ok.points[0], (P3{1, 2.5, -3}));
+  EXPECT_THROW(read(head + "format=\"binary\">AAAA</DataArray></Points></Piece></PolyData></VTKFile>"),
+               TVF::Invalid_input);
+  EXPECT_THROW(read(head + "format=\"ascii\">1 2</DataArray></Points></Piece></PolyData></VTKFile>"),
+               TVF::Invalid_input);
+  EXPECT_THROW(read("<VTKFile type=\"UnstructuredGrid\"></VTKFile>"), TVF::Invalid_input);
+  EXPECT_THROW(read("not xml at all"), TVF::Invalid_input);
+}
+
+TEST(Exports, RawFieldRoundTripIsExactAndFollowsDirectionalsLayout)
+{
+  Mesh torus = make_torus(12, 8);
+  Field field = ambient_field_map(torus, "wind", 9);
+  const std::string file = temporary_path("wind.rawfield");
+  TVF::write_raw_field(file, torus, field);
+  const std::vector<std::string> lines = lines_of(file);
+  ASSERT_EQ(lines.size(), torus.number_of_faces() + 1);
+  EXPECT_EQ(lines[0], "1 " + std::to_string(torus.number_of_faces()));
+  {
+    std::istringstream first(lines[1]);
+    double x, y, z;
+    first >> x >> y >> z;
+    const Vector_3& w = field[*torus.faces().begin()];
+    EXPECT_EQ(Vector_3(x, y, z), w);
+  }
+  Field back = field_map(torus, "back");
+  TVF::read_raw_field(file, torus, back);
+  for(Face_index f : torus.faces()) EXPECT_EQ(back[f], field[f]);
+
+  // Degree 2: pick either vector of each face.
+  TVF::Raw_field two;
+  two.degree = 2;
+  for(Face_index f : torus.faces())
+  {
+    two.vectors.push_back({field[f].x(), field[f].y(), field[f].z()});
+    two.vectors.push_back({-field[f].y(), field[f].x(), 0.25});
+  }
+  const std::string file2 = temporary_path("two.rawfield");
+  {
+    std::ofstream out(file2);
+    TVF::write_raw_field(out, two);
+  }
+  TVF::read_raw_field(file2, torus, back, 1);
+  for(Face_index f : torus.faces()) EXPECT_EQ(back[f], Vector_3(-field[f].y(), field[f].x(), 0.25));
+  EXPECT_THROW(TVF::read_raw_field(file2, torus, back, 2), TVF::Invalid_input);
+  Mesh other = make_torus(10, 8);
+  Field other_field = field_map(other, "x");
+  EXPECT_THROW(TVF::read_raw_field(file, other, other_field), TVF::Invalid_input);
+  std::istringstream truncated("1 3\n1 2 3\n4 5 6\n");
+  EXPECT_THROW(TVF::read_raw_field(truncated), TVF::Invalid_input);
+  std::istringstream extra("1 1\n1 2 3\n4\n");
+  EXPECT_THROW(TVF::read_raw_field(extra), TVF::Invalid_input);
+}
+
+TEST(Exports, StreamlinesAsObjPlyAndVtpKeepEveryPoint)
+{
+  Mesh sphere = make_icosphere(3);
+  Field field = field_map(sphere, "rotation");
+  rotated_height_gradient(sphere, field);
+  TVF::Mesh_streamline_tracer<Mesh> tracer(sphere, field);
+  TVF::Evenly_spaced_options options;
+  options.separation = 0.1;
+  const std::vector<TVF::Streamline> lines = tracer.evenly_spaced(options);
+  ASSERT_GT(lines.size(), 3u);
+  std::vector<P3> all;
+  std::size_t segments = 0, closed = 0;
+  for(const auto& s : lines)
+  {
+    all.insert(all.end(), s.points.begin(), s.points.end());
+    segments += s.number_of_segments();
+    closed += s.closed;
+  }
+  EXPECT_GT(closed, 0u); // the level circles close
+
+  // OBJ: vertices, and one polyline per streamline (closed ones repeat their first index).
+  const std::string obj = temporary_path("lines.obj");
+  TVF::write_streamlines_obj(obj, lines);
+  std::vector<P3> points;
+  std::vector<std::vector<std::size_t>> polylines;
+  for(const std::string& line : lines_of(obj))
+  {
+    std::istringstream in(line);
+    std::string tag;
+    in >> tag;
+    if(tag == "v")
+    {
+      P3 p;
+      in >> p[0] >> p[1] >> p[2];
+      points.push_back(p);
+    }
+    else if(tag == "l")
+    {
+      polylines.emplace_back();
+      for(std::size_t i; in >> i;) polylines.back().push_back(i);
+    }
+  }
+  EXPECT_EQ(points, all);
+  ASSERT_EQ(polylines.size(), lines.size());
+  std::size_t base = 1;
+  for(std::size_t l = 0; l < lines.size(); ++l)
+  {
+    ASSERT_EQ(polylines[l].size(), lines[l].points.size() + (lines[l].closed ? 1 : 0));
+    EXPECT_EQ(polylines[l].front(), base);
+    if(lines[l].closed) EXPECT_EQ(polylines[l].back(), base);
+    base += lines[l].points.size();
+  }
+
+  // PLY: header with edge elements, vertices with face and streamline, one edge per segment.
+  const std::string ply = temporary_path("lines.ply");
+  TVF::write_streamlines_ply(ply, lines);
+  const std::vector<std::string> text = lines_of(ply);
+  const auto end_header = std::find(text.begin(), text.end(), "end_header");
+  ASSERT_NE(end_header, text.end());
+  EXPECT_NE(std::find(text.begin(), end_header, "element vertex " + std::to_string(all.size())), end_header);
+  EXPECT_NE(std::find(text.begin(), end_header, "element edge " + std::to_string(segments + closed)), end_header);
+  EXPECT_NE(std::find(text.begin(), end_header, "property int vertex1"), end_header);
+  std::size_t row = static_cast<std::size_t>(end_header - text.begin()) + 1;
+  for(std::size_t l = 0; l < lines.size(); ++l)
+    for(std::size_t i = 0; i < lines[l].points.size(); ++i, ++row)
+    {
+      std::istringstream in(text[row]);
+      P3 p;
+      int face, line;
+      in >> p[0] >> p[1] >> p[2] >> face >> line;
+      EXPECT_EQ(p, lines[l].points[i]);
+      EXPECT_EQ(face, lines[l].faces[i]);
+      EXPECT_EQ(line, static_cast<int>(l));
+    }
+  EXPECT_EQ(text.size() - row, segments + closed);
+
+  // VTP polylines, read back with the package's reader.
+  const std::string vtp = temporary_path("lines.vtp");
+  TVF::write_streamlines_vtp(vtp, lines);
+  std::ifstream in(vtp);
+  const TVF::Vtk_polydata data = TVF::read_vtk_polydata(in);
+  EXPECT_EQ(data.points, all);
+  ASSERT_EQ(data.lines.size(), lines.size());
+  const TVF::Vtk_polydata::Array* faces = data.find_point_array("face");
+  ASSERT_NE(faces, nullptr);
+  for(std::size_t i = 0, l = 0; l < lines.size(); ++l)
+    for(int f : lines[l].faces) EXPECT_EQ(faces->values[i++], f);
 }
