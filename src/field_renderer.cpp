@@ -495,9 +495,14 @@ struct Field_renderer::Impl
   {
     const Intrinsic_mesh& M = *mesh;
     const Arrow_style& st = set.style;
-    double largest = 0;
-    for(int f = 0; f < M.number_of_faces(); ++f)
-      largest = std::max(largest, std::hypot(set.field[2 * f], set.field[2 * f + 1]));
+    // Lengths relative to the 95th percentile of the magnitudes (longer arrows are
+    // clamped): a few very strong faces would otherwise shrink all other arrows.
+    std::vector<double> magnitudes(M.number_of_faces());
+    for(int f = 0; f < M.number_of_faces(); ++f) magnitudes[f] = std::hypot(set.field[2 * f], set.field[2 * f + 1]);
+    const std::size_t k = static_cast<std::size_t>(0.95 * (magnitudes.size() - 1));
+    std::nth_element(magnitudes.begin(), magnitudes.begin() + k, magnitudes.end());
+    double largest = magnitudes[k];
+    if(!(largest > 0)) largest = *std::max_element(magnitudes.begin(), magnitudes.end());
     if(!(largest > 0)) return;
     const double spacing = std::max(st.spacing, 4.);
     cairo_new_path(cr);
@@ -524,7 +529,8 @@ struct Field_renderer::Impl
         const double screen = std::hypot(dx, dy);
         if(!(screen > 0)) continue;
         const double foreshortening = std::min(1., screen / (h * scale));
-        const double length = 0.85 * spacing * foreshortening * (st.scale_by_magnitude ? magnitude / largest : 1);
+        const double length =
+            0.85 * spacing * foreshortening * (st.scale_by_magnitude ? std::min(1., magnitude / largest) : 1);
         if(length < 1.5) continue;
         const double ux = dx / screen, uy = dy / screen;
         const double x0 = x - ux * length / 2, y0 = y - uy * length / 2;

@@ -126,7 +126,8 @@ struct Arrow_style
   double spacing = 28;
   double width = 1.3;
   double opacity = 0.9;
-  /// Arrow length proportional to the magnitude (the longest fills the cell), else constant.
+  /// Arrow length proportional to the magnitude, else constant.  An arrow fills its
+  /// cell at the 95th percentile of the face magnitudes; longer ones are clamped.
   bool scale_by_magnitude = true;
 };
 
