@@ -9,6 +9,7 @@ packages=(
   libeigen3-dev libspectra-dev
   libsuitesparse-dev libopenblas0-pthread   # CHOLMOD, with OpenBLAS as its BLAS (about 3x faster than the reference BLAS)
   libgtest-dev libbenchmark-dev
+  libcairo2-dev pkg-config fonts-dejavu-core # pictures: Field_renderer (PNG, SVG) and its text
   libcgal-demo                               # CGAL's data tree: the default mesh and the test meshes
 )
 missing=()

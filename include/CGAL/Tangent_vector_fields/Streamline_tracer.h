@@ -1,0 +1,210 @@
+// Copyright (c) 2026 The Tangent_vector_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TANGENT_VECTOR_FIELDS_STREAMLINE_TRACER_H
+#define CGAL_TANGENT_VECTOR_FIELDS_STREAMLINE_TRACER_H
+
+/// \file Streamline_tracer.h
+/// Streamlines of a piecewise-constant tangent field, traced exactly face by face
+/// on an `Intrinsic_mesh`; evenly spaced streamlines and short "fur" strokes.
+/// `Streamlines.h` offers the same on property maps of any `TriangleMesh`.
+
+#include <CGAL/Tangent_vector_fields/Intrinsic_mesh.h>
+
+#include <Eigen/Core>
+
+#include <array>
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+namespace CGAL {
+namespace Tangent_vector_fields {
+
+/// Why one end of a streamline stopped.
+enum class Streamline_stop {
+  none,             ///< not traced in this direction (e.g. only forward was asked for)
+  boundary,         ///< reached a boundary edge
+  zero_field,       ///< entered (or started in) a face whose vector is (nearly) zero
+  sink_edge,        ///< crossed an edge into a face whose vector points back across it: the two face vectors converge
+  sink_vertex,      ///< reached a vertex where no incident face's vector points away from it
+  maximum_length,   ///< reached the length limit
+  maximum_segments, ///< reached the limit on the number of segments
+  closed_loop,      ///< came back to its seed (forward direction only)
+  too_close,        ///< came closer than the test distance to another streamline (evenly spaced seeding)
+  stalled           ///< many consecutive segments of negligible length (spiralling into a vertex)
+};
+
+/// A short name such as "boundary" or "sink_edge".
+const char* to_string(Streamline_stop stop);
+
+/// \brief A streamline: a polyline on the surface that follows the field.
+///
+/// Segment `i` joins `points[i]` and `points[i+1]` inside face `faces[i]` and points
+/// along the field of that face (the polyline runs in the direction of the field,
+/// also for its backward part).  Consecutive segments in different faces meet on the
+/// edge the two faces share, or at a vertex (see `Streamline_tracer`).  `faces` has
+/// one entry per point: the last one is the face of the last segment, so every point
+/// lies in its face.  Face indices are those of the mesh (the face index map).
+struct Streamline
+{
+  std::vector<std::array<double, 3>> points;
+  std::vector<int> faces;
+  /// Position of the seed in `points`.
+  std::size_t seed_index = 0;
+  /// Why the part before the seed stopped (traced against the field).
+  Streamline_stop backward_stop = Streamline_stop::none;
+  /// Why the part after the seed stopped.
+  Streamline_stop forward_stop = Streamline_stop::none;
+  /// True if the forward trace came back to the seed (`forward_stop == closed_loop`);
+  /// the last point is then the point of the last segment nearest to the seed, within
+  /// the closure tolerance of it.
+  bool closed = false;
+
+  std::size_t number_of_segments() const { return points.empty() ? 0 : points.size() - 1; }
+  /// Sum of the segment lengths (in 3D).
+  double length() const;
+};
+
+/// What a length option is measured in.
+enum class Length_unit {
+  absolute,             ///< the mesh's own units
+  mean_edge_length,     ///< multiples of the mean edge length
+  bounding_box_diagonal ///< fractions of the diagonal of the vertices' bounding box
+};
+
+/// Options of a single trace.
+struct Streamline_options
+{
+  /// Longest length traced in each direction from the seed; 0 or less: no limit.
+  double maximum_length = 0;
+  Length_unit length_unit = Length_unit::absolute;
+  /// Most segments in each direction (a guard against endless spirals).
+  int maximum_segments = 100000;
+  bool forward = true;  ///< trace along the field from the seed
+  bool backward = true; ///< trace against the field from the seed
+  /// A face whose vector is at most this times the largest face vector counts as zero.
+  double zero_field_tolerance = 1e-9;
+  /// Detect a loop closing at the seed: when the forward trace passes through the
+  /// seed's face again within this distance of the seed (in units of the mean edge
+  /// length), it stops there.  0 disables the test.
+  double loop_closure_tolerance = 0.05;
+};
+
+/// Options of `Streamline_tracer::evenly_spaced` (Jobard and Lefer 1997, on the surface).
+struct Evenly_spaced_options
+{
+  /// Distance between neighbouring streamlines, in `separation_unit`.
+  double separation = 0.02;
+  Length_unit separation_unit = Length_unit::bounding_box_diagonal;
+  /// A streamline stops when it comes closer than `test_ratio * separation` to another
+  /// one (or to a distant part of itself).
+  double test_ratio = 0.5;
+  /// Streamlines shorter than this times the separation are dropped.
+  double minimum_length_ratio = 1.0;
+  /// Stop after this many streamlines; 0: no limit.
+  int maximum_streamlines = 0;
+  /// Seeds the order of the random candidate seeds.
+  unsigned random_seed = 1;
+  /// Limits of each trace (`maximum_length` is per direction).
+  Streamline_options tracing;
+};
+
+/// Options of `Streamline_tracer::fur`: many short strokes from random roots.
+struct Fur_options
+{
+  /// Length of each stroke (traced forward from its root), in `length_unit`.
+  double length = 0.02;
+  Length_unit length_unit = Length_unit::bounding_box_diagonal;
+  /// Number of strokes; if 0, `density` times the total area.
+  int number_of_strokes = 0;
+  /// Strokes per unit area (in the mesh's units squared), used when `number_of_strokes` is 0.
+  double density = 0;
+  /// Scale each stroke's length by the magnitude of the field at its root relative to
+  /// the largest magnitude, so that the strokes show the strength of the field.
+  bool scale_length_by_magnitude = false;
+  unsigned random_seed = 1;
+  /// Zero-field tolerance and segment limit of each stroke (lengths and directions are set here).
+  Streamline_options tracing;
+};
+
+/// \brief Traces streamlines of one piecewise-constant field on one mesh.
+///
+/// **Exact tracing.**  In a face the field is constant, so a streamline is a straight
+/// segment.  The tracer follows it in the face's 2D layout (`Intrinsic_mesh::corner2_layout`,
+/// in which the frame coordinates of the field are the layout coordinates) using
+/// barycentric coordinates, computes exactly where it leaves the face, and continues
+/// in the neighbouring face from the same point of the shared edge.  A point on an
+/// edge is stored by its parameter along the edge, and its 3D position is computed
+/// from the edge's two end points in both faces, so the polyline is continuous.  3D
+/// positions are the barycentric combinations of the face's corners; without
+/// mollification the layout is the face itself and every segment is parallel to the
+/// 3D face vector.
+///
+/// **Stops.** A boundary edge; a face whose vector is (nearly) zero; a *sink edge*,
+/// where the vector of the face beyond the edge points back across it (the streamline
+/// would zig-zag on the edge forever); the length and segment limits; a closed loop
+/// (the forward trace comes back to its seed); many segments of negligible length.
+///
+/// **Vertices.**  When a segment ends within `1e-12` (barycentric) of a corner, the
+/// point is put on the vertex, and the trace continues in the incident face (other
+/// than the one it came from) whose vector points strictly into the face from the
+/// vertex, choosing the one closest in 3D direction to the incoming segment.  If no
+/// face qualifies the trace stops: with `boundary` on a boundary vertex (the field
+/// leaves the surface there), else with `sink_vertex`.  Two consecutive faces of the
+/// polyline share only that vertex when the trace passes through it.
+///
+/// The mesh is shared, so the tracer may outlive the object it came from.
+class Streamline_tracer
+{
+public:
+  /// `field`: frame coordinates, `2 nf` (face `f` at rows `2f`, `2f+1`).
+  /// \throws Invalid_input if the size is wrong or an entry is not finite.
+  Streamline_tracer(std::shared_ptr<const Intrinsic_mesh> mesh, const Eigen::VectorXd& field);
+  ~Streamline_tracer();
+  Streamline_tracer(Streamline_tracer&&) noexcept;
+  Streamline_tracer& operator=(Streamline_tracer&&) noexcept;
+
+  const Intrinsic_mesh& mesh() const;
+  /// Diagonal of the bounding box of the vertices that belong to faces.
+  double bounding_box_diagonal() const;
+  /// `value` converted from `unit` to the mesh's units.
+  double to_absolute(double value, Length_unit unit) const;
+  /// Largest magnitude of the face vectors.
+  double maximum_magnitude() const;
+
+  /// Traces from a point of face `face` given by barycentric coordinates with respect
+  /// to the face's corners in local order (`Intrinsic_mesh::face_vertices`); they are
+  /// clamped to be non-negative and normalised.
+  /// \throws Invalid_input for a face index out of range or non-finite coordinates.
+  Streamline trace(int face, const std::array<double, 3>& barycentric,
+                   const Streamline_options& options = Streamline_options()) const;
+  /// Traces from the 3D point `point`, projected onto face `face` (and clamped into it).
+  Streamline trace_from_point(int face, const std::array<double, 3>& point,
+                              const Streamline_options& options = Streamline_options()) const;
+
+  /// Evenly spaced streamlines: each new streamline is seeded at the separation
+  /// distance beside an accepted one (walking across the field on the surface), or at
+  /// random area-uniform points where no streamline has reached yet; a seed closer
+  /// than 0.9 times the separation to an existing streamline is refused, and a
+  /// streamline stops when it comes closer than `test_ratio` times the separation to
+  /// another one.  Distances are 3D (Euclidean) distances between points of the
+  /// streamlines sampled at `test_ratio / 2` times the separation, found with a
+  /// uniform grid; they approximate the geodesic ones well when the separation is
+  /// small compared with the curvature radii.  The result is deterministic for a
+  /// given `random_seed`.
+  std::vector<Streamline> evenly_spaced(const Evenly_spaced_options& options = Evenly_spaced_options()) const;
+
+  /// Short strokes traced forward from random roots, uniformly distributed by area.
+  /// Strokes of zero length (roots in zero-field faces) are left out.
+  std::vector<Streamline> fur(const Fur_options& options) const;
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+} // namespace Tangent_vector_fields
+} // namespace CGAL
+
+#endif

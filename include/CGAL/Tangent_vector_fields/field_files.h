@@ -1,0 +1,109 @@
+// Copyright (c) 2026 The Tangent_vector_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TANGENT_VECTOR_FIELDS_FIELD_FILES_H
+#define CGAL_TANGENT_VECTOR_FIELDS_FIELD_FILES_H
+
+/// \file field_files.h
+/// File formats for looking at fields in other programs, on plain arrays (no mesh
+/// type): VTK XML PolyData (`.vtp`, read by ParaView), streamlines as OBJ polylines
+/// and as PLY edges, and Directional's `.rawfield`.  `field_export.h` offers the same
+/// on property maps of a `TriangleMesh`.
+///
+/// Every number is written with 17 significant digits, so a write followed by a
+/// read gives back the same doubles.
+
+#include <CGAL/Tangent_vector_fields/Streamline_tracer.h>
+
+#include <array>
+#include <iosfwd>
+#include <utility>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Tangent_vector_fields {
+
+/// \brief The part of a VTK PolyData data set this package writes and reads: points,
+/// polygons, polylines, and named arrays on points and on cells.
+///
+/// VTK numbers cells lines first, then polygons: a cell array has one tuple per line
+/// followed by one per polygon.
+struct Vtk_polydata
+{
+  struct Array
+  {
+    std::string name;
+    int components = 1;
+    std::vector<double> values; ///< `components` values per tuple
+    std::size_t number_of_tuples() const { return components > 0 ? values.size() / components : 0; }
+  };
+
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::vector<int>> lines;    ///< polylines, as point indices
+  std::vector<std::vector<int>> polygons; ///< polygons, as point indices
+  std::vector<Array> point_data;
+  std::vector<Array> cell_data;
+
+  std::size_t number_of_cells() const { return lines.size() + polygons.size(); }
+  /// The cell (or point) array called `name`, or null.
+  const Array* find_cell_array(const std::string& name) const;
+  const Array* find_point_array(const std::string& name) const;
+};
+
+/// Writes `data` as a VTK XML PolyData file (`<VTKFile type="PolyData">`, ASCII data
+/// arrays: `Float64` for points and arrays, `Int64` for connectivity and offsets).
+/// The first 3-component cell array is marked as the cells' active vectors.
+/// \throws Invalid_input if an index or an array size does not fit, or the stream fails.
+void write_vtk_polydata(std::ostream& out, const Vtk_polydata& data);
+
+/// Reads a VTK XML PolyData file with ASCII data arrays (`format="ascii"`; the
+/// `binary` and `appended` formats are refused): points, lines, polygons, point and
+/// cell data arrays of any numeric type (read as `double`).  Vertices and strips are
+/// refused.
+/// \throws Invalid_input for anything else or a malformed file.
+Vtk_polydata read_vtk_polydata(std::istream& in);
+
+/// A mesh with face vector arrays, ready for `write_vtk_polydata`: the triangles are
+/// the polygons, each field a 3-component cell array named after it.
+Vtk_polydata face_fields_polydata(const std::vector<std::array<double, 3>>& points,
+                                  const std::vector<std::array<int, 3>>& triangles,
+                                  const std::vector<std::pair<std::string, std::vector<std::array<double, 3>>>>& fields);
+
+/// Streamlines as VTK polylines, with a point array `face` (the face of each point)
+/// and cell arrays `closed` (1 for closed loops) and `length`.
+Vtk_polydata streamlines_polydata(const std::vector<Streamline>& lines);
+
+/// Writes streamlines as an OBJ file: all points as `v x y z`, then one `l i j k ...`
+/// element per streamline (1-based indices).  A closed streamline repeats its first
+/// index at the end.
+void write_streamlines_obj(std::ostream& out, const std::vector<Streamline>& lines);
+
+/// Writes streamlines as an ASCII PLY file: `element vertex` with `double x, y, z`
+/// and `int face`, `int streamline`; `element edge` with `int vertex1, vertex2` (one
+/// edge per segment, and the closing edge of a closed streamline).
+void write_streamlines_ply(std::ostream& out, const std::vector<Streamline>& lines);
+
+/// \brief A field in Directional's raw format: `degree` vectors per face.
+///
+/// The file is text: a first line `<degree> <number of faces>`, then one line per
+/// face with the `3 * degree` coordinates `x1 y1 z1 x2 y2 z2 ...` of its vectors
+/// (Directional's `read_raw_field` and `write_raw_field`).
+struct Raw_field
+{
+  int degree = 1;
+  /// `degree` vectors per face, face after face.
+  std::vector<std::array<double, 3>> vectors;
+  std::size_t number_of_faces() const { return degree > 0 ? vectors.size() / degree : 0; }
+};
+
+/// \throws Invalid_input if `degree` is not positive, the vector count is not a
+///         multiple of it, or the stream fails.
+void write_raw_field(std::ostream& out, const Raw_field& field);
+/// \throws Invalid_input for a bad header, missing or non-finite numbers, or extra numbers.
+Raw_field read_raw_field(std::istream& in);
+
+} // namespace Tangent_vector_fields
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,1017 @@
+// Copyright (c) 2026 The Tangent_vector_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+// Seeing fields: exact streamlines (on the surface, along the field, continuous
+// across edges, stopping where they should), evenly spaced seeding and fur; the
+// export formats and their round trips; pictures and charts.
+
+#include "test_meshes.h"
+
+#include <CGAL/Tangent_vector_fields/Discrete_operators.h>
+#include <CGAL/Tangent_vector_fields/Streamlines.h>
+#include <CGAL/Tangent_vector_fields/field_export.h>
+#include <CGAL/Tangent_vector_fields/svg_chart.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <iterator>
+#include <fstream>
+#include <sstream>
+#include <cmath>
+#include <random>
+
+namespace TVF = CGAL::Tangent_vector_fields;
+using namespace tvf_test;
+
+namespace {
+
+typedef Mesh::Property_map<Face_index, Vector_3> Field;
+typedef std::array<double, 3> P3;
+
+Field field_map(Mesh& mesh, const std::string& name)
+{
+  return mesh.add_property_map<Face_index, Vector_3>("f:" + name, Vector_3(0, 0, 0)).first;
+}
+
+P3 sub(const P3& a, const P3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+double dot(const P3& a, const P3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+P3 cross(const P3& a, const P3& b)
+{
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+double norm(const P3& a) { return std::sqrt(dot(a, a)); }
+
+// J grad z: tangent to the level sets of the (piecewise-linear) height z, so its
+// streamlines are exactly the level polygons z = const.
+void rotated_height_gradient(Mesh& mesh, Field out)
+{
+  auto z = mesh.add_property_map<Vertex_index, double>("v:z", 0.).first;
+  for(Vertex_index v : mesh.vertices()) z[v] = mesh.point(v).z();
+  Field g = field_map(mesh, "grad_z");
+  TVF::Discrete_operators<Mesh> ops(mesh);
+  ops.gradient(z, g);
+  ops.rotate(g, out);
+}
+
+// Counts of what the geometric checks saw.
+struct Seen
+{
+  int segments = 0, edge_crossings = 0, vertex_passes = 0, tiny_segments = 0;
+};
+
+// Every point on its face (in its plane and inside the triangle), every segment
+// along its face vector, consecutive faces meeting on an edge (point on it) or at a
+// vertex (point on it).
+void expect_valid_streamline(const TVF::Intrinsic_mesh& M, const Eigen::VectorXd& x, const TVF::Streamline& s,
+                             Seen& seen)
+{
+  ASSERT_EQ(s.points.size(), s.faces.size());
+  ASSERT_LT(s.seed_index, s.points.size());
+  const double h = M.mean_edge_length();
+  for(std::size_t i = 0; i < s.points.size(); ++i)
+  {
+    const int f = s.faces[i];
+    ASSERT_GE(f, 0);
+    ASSERT_LT(f, M.number_of_faces());
+    const auto& t = M.face_vertices(f);
+    const P3 d = sub(s.points[i], M.position(t[0]));
+    const double size = std::max({M.face_edge_length(f, 0), M.face_edge_length(f, 1), M.face_edge_length(f, 2)});
+    EXPECT_LE(std::abs(dot(d, M.normal(f))), 1e-9 * size) << "point " << i << " off the plane of face " << f;
+    // Barycentric coordinates from signed areas in the plane.
+    const P3 p1 = sub(M.position(t[1]), M.position(t[0])), p2 = sub(M.position(t[2]), M.position(t[0]));
+    const double area2 = dot(cross(p1, p2), M.normal(f));
+    const double b1 = dot(cross(d, p2), M.normal(f)) / area2, b2 = dot(cross(p1, d), M.normal(f)) / area2;
+    EXPECT_GE(b1, -1e-9);
+    EXPECT_GE(b2, -1e-9);
+    EXPECT_GE(1 - b1 - b2, -1e-9) << "point " << i << " outside face " << f;
+  }
+  for(std::size_t i = 0; i + 1 < s.points.size(); ++i)
+  {
+    ++seen.segments;
+    const int f = s.faces[i];
+    const P3 seg = sub(s.points[i + 1], s.points[i]);
+    const P3 v = M.from_frame(f, x[2 * f], x[2 * f + 1]);
+    const double ls = norm(seg), lv = norm(v);
+    if(ls < 1e-9 * h)
+      ++seen.tiny_segments;
+    else
+    {
+      EXPECT_LE(norm(cross(seg, v)), 1e-9 * ls * lv) << "segment " << i << " not parallel to the field of face " << f;
+      EXPECT_GT(dot(seg, v), 0) << "segment " << i << " runs against the field";
+    }
+    if(i + 1 < s.number_of_segments() && s.faces[i + 1] != f)
+    {
+      const int g = s.faces[i + 1];
+      std::vector<int> shared;
+      for(int a : M.face_vertices(f))
+        for(int b : M.face_vertices(g))
+          if(a == b) shared.push_back(a);
+      const P3& q = s.points[i + 1];
+      if(shared.size() == 2)
+      {
+        ++seen.edge_crossings;
+        const P3 a = M.position(shared[0]), e = sub(M.position(shared[1]), a);
+        const double u = dot(sub(q, a), e) / dot(e, e);
+        EXPECT_GE(u, -1e-12);
+        EXPECT_LE(u, 1 + 1e-12);
+        EXPECT_LE(norm(cross(sub(q, a), e)) / norm(e), 1e-12 * h) << "crossing point off the shared edge";
+      }
+      else
+      {
+        ASSERT_EQ(shared.size(), 1u) << "faces " << f << " and " << g << " are not neighbours";
+        ++seen.vertex_passes;
+        EXPECT_EQ(q, M.position(shared[0])) << "passage from face " << f << " to " << g << " not on their vertex";
+      }
+    }
+  }
+}
+
+std::vector<std::pair<Face_index, Point_3>> random_seeds(const Mesh& mesh, int count, unsigned seed)
+{
+  std::mt19937 gen(seed);
+  std::uniform_int_distribution<int> pick(0, static_cast<int>(mesh.number_of_faces()) - 1);
+  std::uniform_real_distribution<double> u(0.05, 0.9);
+  std::vector<std::pair<Face_index, Point_3>> seeds;
+  for(int i = 0; i < count; ++i)
+  {
+    const Face_index f(pick(gen));
+    std::vector<Point_3> p;
+    for(Vertex_index v : vertices_around_face(mesh.halfedge(f), mesh)) p.push_back(mesh.point(v));
+    const double a = u(gen), b = u(gen) * (1 - a);
+    seeds.emplace_back(f, p[0] + a * (p[1] - p[0]) + b * (p[2] - p[0]));
+  }
+  return seeds;
+}
+
+} // namespace
+
+TEST(Streamlines, StayOnTheSurfaceFollowTheFieldAndCrossOnSharedEdges)
+{
+  std::vector<std::pair<std::string, Mesh>> meshes;
+  Mesh sphere = make_icosphere(3);
+  jitter_vertices(sphere, 0.2, 3);
+  meshes.emplace_back("jittered icosphere", sphere);
+  meshes.emplace_back("irregular torus", make_torus(30, 14));
+  meshes.emplace_back("curved annulus", make_curved_disk(8, 0.3));
+  for(auto& named : meshes)
+  {
+    SCOPED_TRACE(named.first);
+    Mesh& mesh = named.second;
+    Field field = ambient_field_map(mesh, "wind", 5);
+    TVF::Mesh_streamline_tracer<Mesh> tracer(mesh, field);
+    const TVF::Intrinsic_mesh& M = tracer.tracer().mesh();
+    const Eigen::VectorXd x = tracer.adapter().read_field(field);
+    Seen seen;
+    for(const auto& seed : random_seeds(mesh, 40, 11))
+    {
+      const TVF::Streamline s = tracer.trace(seed.first, seed.second);
+      ASSERT_GE(s.points.size(), 2u);
+      // The seed is kept (projected onto its face).
+      EXPECT_LT(norm(sub(s.points[s.seed_index], {seed.second.x(), seed.second.y(), seed.second.z()})), 1e-12);
+      EXPECT_EQ(s.faces[s.seed_index], static_cast<int>(std::size_t(seed.first)));
+      expect_valid_streamline(M, x, s, seen);
+    }
+    TVF::Evenly_spaced_options even;
+    even.separation = 0.05;
+    for(const TVF::Streamline& s : tracer.evenly_spaced(even)) expect_valid_streamline(M, x, s, seen);
+    EXPECT_GT(seen.edge_crossings, 1000);
+    EXPECT_LT(seen.tiny_segments, seen.segments / 1000 + 1);
+  }
+}
+
+TEST(Streamlines, PassThroughVerticesHitExactly)
+{
+  // A regular grid in the plane, cut along the diagonals (i, j)-(i+1, j+1); the field
+  // (2, 1) carries the streamline from (0.5, 0.25) exactly through the vertices (2k, k).
+  std::vector<Point_3> p;
+  std::vector<std::array<int, 3>> t;
+  const int n = 12;
+  for(int j = 0; j <= n; ++j)
+    for(int i = 0; i <= n; ++i) p.emplace_back(i, j, 0);
+  auto id = [&](int i, int j) { return j * (n + 1) + i; };
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i)
+    {
+      t.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      t.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  Mesh mesh = make_mesh(p, t);
+  Field field = field_map(mesh, "diagonal");
+  for(Face_index f : mesh.faces()) field[f] = Vector_3(2, 1, 0);
+  TVF::Mesh_streamline_tracer<Mesh> tracer(mesh, field);
+  const Face_index start(0); // triangle (0,0), (1,0), (1,1)
+  const TVF::Streamline s = tracer.trace(start, Point_3(0.5, 0.25, 0));
+  Seen seen;
+  expect_valid_streamline(tracer.tracer().mesh(), tracer.adapter().read_field(field), s, seen);
+  EXPECT_EQ(s.forward_stop, TVF::Streamline_stop::boundary);
+  EXPECT_EQ(s.backward_stop, TVF::Streamline_stop::boundary);
+  for(const P3& q : s.points) EXPECT_NEAR(q[1], q[0] / 2, 1e-12);
+  EXPECT_EQ(s.points.front(), (P3{0, 0, 0})); // backward it ends on the corner vertex
+  EXPECT_NEAR(s.points.back()[0], 12, 1e-12);
+  EXPECT_NEAR(s.points.back()[1], 6, 1e-12);
+  EXPECT_EQ(seen.vertex_passes, 5); // (2,1), (4,2), (6,3), (8,4), (10,5)
+}
+
+TEST(Streamlines, StopAtTheBoundaryOfADisk)
+{
+  Mesh disk = make_disk(10);
+  Field outward = field_map(disk, "outward");
+  Field constant = field_map(disk, "constant");
+  for(Face_index f : disk.faces())
+  {
+    const Point_3 c = CGAL::centroid(disk.point(disk.source(disk.halfedge(f))), disk.point(disk.target(disk.halfedge(f))),
+                                     disk.point(disk.target(disk.next(disk.halfedge(f)))));
+    outward[f] = c - CGAL::ORIGIN;
+    constant[f] = Vector_3(1, 0.2, 0);
+  }
+  for(int which = 0; which < 2; ++which)
+  {
+    SCOPED_TRACE(which == 0 ? "outward field" : "constant field");
+    const Field field = which == 0 ? outward : constant;
+    TVF::Mesh_streamline_tracer<Mesh> tracer(disk, field);
+    const TVF::Intrinsic_mesh& M = tracer.tracer().mesh();
+    Seen seen;
+    for(const auto& seed : random_seeds(disk, 30, 4))
+    {
+      const TVF::Streamline s = tracer.trace(seed.first, seed.second);
+      expect_valid_streamline(M, tracer.adapter().read_field(field), s, seen);
+      EXPECT_EQ(s.forward_stop, TVF::Streamline_stop::boundary);
+      const P3& end = s.points.back();
+      const double r = std::hypot(end[0], end[1]);
+      EXPECT_GE(r, 0.99); // the boundary polygon's vertices are on the unit circle
+      EXPECT_LE(r, 1 + 1e-12);
+      // The last face has a boundary edge, and the end point lies on it.
+      bool on_boundary_edge = false;
+      for(int e : M.face_edges(s.faces.back()))
+        if(M.is_boundary_edge(e))
+        {
+          const P3 a = M.position(M.edge_vertices(e)[0]), b = M.position(M.edge_vertices(e)[1]);
+          if(norm(cross(sub(end, a), sub(b, a))) <= 1e-12 * norm(sub(b, a))) on_boundary_edge = true;
+        }
+      EXPECT_TRUE(on_boundary_edge);
+      if(which == 1) EXPECT_EQ(s.backward_stop, TVF::Streamline_stop::boundary);
+    }
+  }
+}
+
+TEST(Streamlines, StopAtSinksInsteadOfZigZagging)
+{
+  // -grad of the (piecewise-linear) distance to q flows downhill towards q: each
+  // streamline ends where the flow converges, on a sink edge (the face beyond points
+  // back across it) or a sink vertex, after a handful of segments.
+  struct Case
+  {
+    std::string name;
+    Mesh mesh;
+    Point_3 q;
+  };
+  std::vector<Case> cases;
+  cases.push_back({"disk, q at the centre vertex", make_disk(10), Point_3(0, 0, 0)});
+  cases.push_back({"disk, q inside a face", make_disk(10), Point_3(0.313, -0.271, 0)});
+  cases.push_back({"sphere, q at the north pole", make_icosphere(3), Point_3(0, 0, 1)});
+  for(Case& c : cases)
+  {
+    SCOPED_TRACE(c.name);
+    auto distance = c.mesh.add_property_map<Vertex_index, double>("v:distance", 0.).first;
+    for(Vertex_index v : c.mesh.vertices()) distance[v] = -std::sqrt(CGAL::squared_distance(c.mesh.point(v), c.q));
+    Field field = field_map(c.mesh, "downhill");
+    TVF::Discrete_operators<Mesh>(c.mesh).gradient(distance, field); // grad of -distance
+    TVF::Mesh_streamline_tracer<Mesh> tracer(c.mesh, field);
+    const TVF::Intrinsic_mesh& M = tracer.tracer().mesh();
+    const Eigen::VectorXd x = tracer.adapter().read_field(field);
+    const double h = M.mean_edge_length();
+    const P3 q = {c.q.x(), c.q.y(), c.q.z()};
+    Seen seen;
+    TVF::Streamline_options forward_only;
+    forward_only.backward = false;
+    int near_q = 0, count = 0;
+    for(const auto& seed : random_seeds(c.mesh, 40, 9))
+    {
+      const TVF::Streamline s = tracer.trace(seed.first, seed.second, forward_only);
+      expect_valid_streamline(M, x, s, seen);
+      ++count;
+      const P3& end = s.points.back();
+      const double start_distance = norm(sub(s.points.front(), q));
+      EXPECT_LT(static_cast<double>(s.number_of_segments()), 4 * start_distance / h + 10);
+      near_q += norm(sub(end, q)) < 2 * h;
+      if(s.forward_stop == TVF::Streamline_stop::sink_vertex)
+      {
+        bool on_vertex = false;
+        for(int v : M.face_vertices(s.faces.back())) on_vertex = on_vertex || end == M.position(v);
+        EXPECT_TRUE(on_vertex);
+        continue;
+      }
+      ASSERT_EQ(s.forward_stop, TVF::Streamline_stop::sink_edge) << TVF::to_string(s.forward_stop);
+      // The end lies on an edge of the last face, and the field of the face beyond
+      // that edge points back across it.
+      const int f = s.faces.back();
+      int edge = -1;
+      for(int e : M.face_edges(f))
+      {
+        const P3 a = M.position(M.edge_vertices(e)[0]), b = M.position(M.edge_vertices(e)[1]);
+        if(norm(cross(sub(end, a), sub(b, a))) <= 1e-12 * norm(sub(b, a))) edge = e;
+      }
+      ASSERT_GE(edge, 0);
+      const int g = M.edge_faces(edge)[0] == f ? M.edge_faces(edge)[1] : M.edge_faces(edge)[0];
+      ASSERT_GE(g, 0);
+      const P3 a = M.position(M.edge_vertices(edge)[0]), b = M.position(M.edge_vertices(edge)[1]);
+      P3 inward = cross(M.normal(g), sub(b, a));
+      int apex = 0;
+      for(int v : M.face_vertices(g))
+        if(v != M.edge_vertices(edge)[0] && v != M.edge_vertices(edge)[1]) apex = v;
+      if(dot(inward, sub(M.position(apex), a)) < 0) inward = {-inward[0], -inward[1], -inward[2]};
+      EXPECT_LE(dot(M.from_frame(g, x[2 * g], x[2 * g + 1]), inward), 0);
+    }
+    // Most flows end next to q (the rest in valleys of the interpolated distance).
+    EXPECT_GT(near_q, count / 2);
+  }
+}
+
+TEST(Streamlines, ClosedLoopsOfARotationalFieldAreDetected)
+{
+  // J grad z on a sphere and a torus: the streamlines are the level polygons of z.
+  struct Case
+  {
+    std::string name;
+    Mesh mesh;
+    double z, perimeter; // level and the length of the smooth level circle
+  };
+  std::vector<Case> cases;
+  Mesh sphere = make_icosphere(4);
+  jitter_vertices(sphere, 0.1, 5);
+  cases.push_back({"sphere", sphere, 0.5, 2 * M_PI * std::sqrt(0.75)});
+  cases.push_back({"torus", make_torus(60, 30, 1.0, 0.4, 0.2), 0.2, 2 * M_PI * (1 + 0.4 * std::sqrt(0.75))});
+  for(Case& c : cases)
+  {
+    SCOPED_TRACE(c.name);
+    Field field = field_map(c.mesh, "rotation");
+    rotated_height_gradient(c.mesh, field);
+    TVF::Mesh_streamline_tracer<Mesh> tracer(c.mesh, field);
+    const TVF::Intrinsic_mesh& M = tracer.tracer().mesh();
+    // Seeds: the faces the level z crosses, on the outside of the torus.
+    int tested = 0;
+    Seen seen;
+    for(Face_index f : c.mesh.faces())
+    {
+      std::vector<Point_3> p;
+      for(Vertex_index v : vertices_around_face(c.mesh.halfedge(f), c.mesh)) p.push_back(c.mesh.point(v));
+      const Point_3 m = CGAL::centroid(p[0], p[1], p[2]);
+      const double lo = std::min({p[0].z(), p[1].z(), p[2].z()}), hi = std::max({p[0].z(), p[1].z(), p[2].z()});
+      if(!(lo < c.z && c.z < hi) || std::hypot(m.x(), m.y()) < 0.75 || (tested++ % 7) != 0) continue;
+      // The point of the face at height c.z on the segment between the centroid and a corner.
+      const Point_3& a = p[0].z() < c.z == m.z() < c.z ? (p[1].z() < c.z == m.z() < c.z ? p[2] : p[1]) : p[0];
+      const double u = (c.z - m.z()) / (a.z() - m.z());
+      const Point_3 seed = m + u * (a - m);
+      const TVF::Streamline s = tracer.trace(f, seed);
+      expect_valid_streamline(M, tracer.adapter().read_field(field), s, seen);
+      EXPECT_TRUE(s.closed) << TVF::to_string(s.forward_stop);
+      EXPECT_EQ(s.forward_stop, TVF::Streamline_stop::closed_loop);
+      EXPECT_EQ(s.backward_stop, TVF::Streamline_stop::none);
+      EXPECT_LT(norm(sub(s.points.back(), s.points.front())), 1e-9);
+      EXPECT_NEAR(s.length(), c.perimeter, 0.02 * c.perimeter);
+      for(const P3& q : s.points) EXPECT_NEAR(q[2], c.z, 1e-12);
+    }
+    EXPECT_GT(tested, 7);
+  }
+}
+
+TEST(Streamlines, EvenlySpacedLinesKeepTheirDistanceAndCoverTheSurface)
+{
+  Mesh sphere = make_icosphere(4);
+  jitter_vertices(sphere, 0.2, 8);
+  Field field = ambient_field_map(sphere, "wind", 12);
+  TVF::Mesh_streamline_tracer<Mesh> tracer(sphere, field);
+  TVF::Evenly_spaced_options options;
+  options.separation = 0.08; // of the bounding-box diagonal (2 sqrt 3)
+  const double separation = 0.08 * tracer.tracer().bounding_box_diagonal();
+  const std::vector<TVF::Streamline> lines = tracer.evenly_spaced(options);
+  ASSERT_GT(lines.size(), 10u);
+  // Samples of every line, 0.1 separation apart.
+  struct Sample
+  {
+    P3 p;
+    std::size_t line;
+  };
+  std::vector<Sample> samples;
+  for(std::size_t l = 0; l < lines.size(); ++l)
+  {
+    EXPECT_GE(lines[l].length(), separation * options.minimum_length_ratio);
+    const auto& q = lines[l].points;
+    for(std::size_t i = 0; i + 1 < q.size(); ++i)
+    {
+      const int k = 1 + static_cast<int>(norm(sub(q[i + 1], q[i])) / (0.1 * separation));
+      for(int j = 0; j < k; ++j)
+      {
+        const double u = double(j) / k;
+        samples.push_back({{q[i][0] + u * (q[i + 1][0] - q[i][0]), q[i][1] + u * (q[i + 1][1] - q[i][1]),
+                            q[i][2] + u * (q[i + 1][2] - q[i][2])},
+                           l});
+      }
+    }
+  }
+  // Separation: different lines never come much closer than the test distance.
+  double closest = 1e300;
+  for(std::size_t i = 0; i < samples.size(); ++i)
+    for(std::size_t j = i + 1; j < samples.size(); ++j)
+      if(samples[i].line != samples[j].line) closest = std::min(closest, norm(sub(samples[i].p, samples[j].p)));
+  EXPECT_GT(closest, 0.4 * separation);
+  // Coverage: random points of the sphere are near some line.
+  std::mt19937 gen(3);
+  std::normal_distribution<double> N;
+  int far = 0;
+  const int trials = 2000;
+  for(int t = 0; t < trials; ++t)
+  {
+    P3 p = {N(gen), N(gen), N(gen)};
+    const double r = norm(p);
+    p = {p[0] / r, p[1] / r, p[2] / r};
+    double d = 1e300;
+    for(const Sample& s : samples) d = std::min(d, norm(sub(s.p, p)));
+    if(d > 1.0 * separation) ++far;
+  }
+  EXPECT_LT(far, trials / 50);
+  // Deterministic for a given random seed.
+  const std::vector<TVF::Streamline> again = tracer.evenly_spaced(options);
+  ASSERT_EQ(again.size(), lines.size());
+  for(std::size_t l = 0; l < lines.size(); ++l) EXPECT_EQ(again[l].points, lines[l].points);
+}
+
+TEST(Streamlines, FurStrokesHaveTheRequestedCountLengthAndDirection)
+{
+  Mesh sphere = make_icosphere(3);
+  Field field = field_map(sphere, "rotation");
+  rotated_height_gradient(sphere, field);
+  TVF::Mesh_streamline_tracer<Mesh> tracer(sphere, field);
+  const TVF::Intrinsic_mesh& M = tracer.tracer().mesh();
+  double area = 0;
+  for(int f = 0; f < M.number_of_faces(); ++f) area += M.face_area(f);
+  TVF::Fur_options fur;
+  fur.length = 0.1;
+  fur.length_unit = TVF::Length_unit::absolute;
+  fur.density = 40;
+  const std::vector<TVF::Streamline> strokes = tracer.fur(fur);
+  EXPECT_NEAR(static_cast<double>(strokes.size()), 40 * area, 1.0);
+  int full_length = 0;
+  Seen seen;
+  for(const TVF::Streamline& s : strokes)
+  {
+    expect_valid_streamline(M, tracer.adapter().read_field(field), s, seen);
+    EXPECT_EQ(s.seed_index, 0u);
+    EXPECT_EQ(s.backward_stop, TVF::Streamline_stop::none);
+    EXPECT_LE(s.length(), 0.1 * (1 + 1e-9));
+    if(s.forward_stop == TVF::Streamline_stop::maximum_length)
+    {
+      ++full_length;
+      EXPECT_NEAR(s.length(), 0.1, 1e-9);
+    }
+  }
+  EXPECT_GT(full_length, static_cast<int>(strokes.size()) * 95 / 100);
+  // Scaled by magnitude: the rotational field is weakest near the poles.
+  fur.scale_length_by_magnitude = true;
+  fur.number_of_strokes = 300;
+  const double largest = tracer.tracer().maximum_magnitude();
+  const Eigen::VectorXd x = tracer.adapter().read_field(field);
+  for(const TVF::Streamline& s : tracer.fur(fur))
+  {
+    const int f = s.faces.front();
+    const double expected = 0.1 * std::hypot(x[2 * f], x[2 * f + 1]) / largest;
+    EXPECT_LE(s.length(), expected * (1 + 1e-9));
+  }
+  // Roots are spread by area: about as many in each hemisphere.
+  int north = 0;
+  for(const TVF::Streamline& s : strokes) north += s.points.front()[2] > 0;
+  EXPECT_NEAR(north, static_cast<double>(strokes.size()) / 2, 4 * std::sqrt(static_cast<double>(strokes.size())));
+}
+
+TEST(Streamlines, BadArgumentsAreRefused)
+{
+  Mesh sphere = make_icosphere(1);
+  Field field = ambient_field_map(sphere, "wind", 1);
+  TVF::Mesh_streamline_tracer<Mesh> tracer(sphere, field);
+  EXPECT_THROW(tracer.tracer().trace(-1, {1, 0, 0}), TVF::Invalid_input);
+  EXPECT_THROW(tracer.tracer().trace(0, {NAN, 0, 0}), TVF::Invalid_input);
+  TVF::Evenly_spaced_options bad;
+  bad.separation = 0;
+  EXPECT_THROW(tracer.evenly_spaced(bad), TVF::Invalid_input);
+  TVF::Fur_options no_count;
+  EXPECT_THROW(tracer.fur(no_count), TVF::Invalid_input);
+  EXPECT_THROW(TVF::Streamline_tracer(tracer.adapter().intrinsic_mesh(), Eigen::VectorXd::Zero(3)), TVF::Invalid_input);
+  // A zero field gives a streamline of one point.
+  Field zero = field_map(sphere, "zero");
+  const TVF::Streamline s = TVF::trace_streamline(sphere, zero, *sphere.faces().begin(), sphere.point(Vertex_index(0)));
+  EXPECT_EQ(s.points.size(), 1u);
+  EXPECT_EQ(s.forward_stop, TVF::Streamline_stop::zero_field);
+}
+
+// ---------------------------------------------------------------------------
+// Exports
+
+namespace {
+
+std::string temporary_path(const std::string& name) { return ::testing::TempDir() + "tvf_visual_" + name; }
+
+std::vector<std::string> lines_of(const std::string& filename)
+{
+  std::ifstream in(filename);
+  std::vector<std::string> lines;
+  for(std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+} // namespace
+
+TEST(Exports, VtpRoundTripIsExact)
+{
+  Mesh sphere = make_icosphere(2);
+  jitter_vertices(sphere, 0.3, 2);
+  Field wind = ambient_field_map(sphere, "wind", 3);
+  Field gust = ambient_field_map(sphere, "gust", 4);
+  const std::string file = temporary_path("fields.vtp");
+  TVF::write_vtp(file, sphere, std::vector<std::pair<std::string, Field>>{{"wind", wind}, {"gust", gust}});
+  Field wind_back = field_map(sphere, "wind_back"), gust_back = field_map(sphere, "gust_back");
+  TVF::read_vtp(file, sphere, "wind", wind_back);
+  TVF::read_vtp(file, sphere, "gust", gust_back);
+  for(Face_index f : sphere.faces())
+  {
+    EXPECT_EQ(wind_back[f], wind[f]);
+    EXPECT_EQ(gust_back[f], gust[f]);
+  }
+  // The geometry and connectivity come back too, and the file names its active vectors.
+  std::ifstream in(file);
+  const TVF::Vtk_polydata data = TVF::read_vtk_polydata(in);
+  ASSERT_EQ(data.points.size(), sphere.number_of_vertices());
+  for(Vertex_index v : sphere.vertices())
+    EXPECT_EQ(data.points[std::size_t(v)], (P3{sphere.point(v).x(), sphere.point(v).y(), sphere.point(v).z()}));
+  ASSERT_EQ(data.polygons.size(), sphere.number_of_faces());
+  for(Face_index f : sphere.faces())
+  {
+    std::vector<int> corners;
+    for(Vertex_index v : vertices_around_face(sphere.halfedge(f), sphere)) corners.push_back(int(std::size_t(v)));
+    EXPECT_EQ(data.polygons[std::size_t(f)], corners);
+  }
+  bool header = false, active = false;
+  for(const std::string& line : lines_of(file))
+  {
+    header = header || line.find("<VTKFile type=\"PolyData\"") != std::string::npos;
+    active = active || line.find("<CellData Vectors=\"wind\">") != std::string::npos;
+  }
+  EXPECT_TRUE(header);
+  EXPECT_TRUE(active);
+  EXPECT_THROW(TVF::read_vtp(file, sphere, "missing", wind_back), TVF::Invalid_input);
+  Mesh other = make_icosphere(1);
+  Field other_field = field_map(other, "x");
+  EXPECT_THROW(TVF::read_vtp(file, other, "wind", other_field), TVF::Invalid_input);
+}
+
+TEST(Exports, VtpReaderRefusesWhatItCannotRead)
+{
+  auto read = [](const std::string& text) {
+    std::istringstream in(text);
+    return TVF::read_vtk_polydata(in);
+  };
+  const std::string head = "<VTKFile type=\"PolyData\" version=\"0.1\"><PolyData><Piece NumberOfPoints=\"1\" "
+                           "NumberOfPolys=\"0\"><Points><DataArray type=\"Float32\" NumberOfComponents=\"3\" ";
+  const TVF::Vtk_polydata ok = read(head + "format=\"ascii\">1 2.5 -3</DataArray></Points></Piece></PolyData></VTKFile>");
+  ASSERT_EQ(ok.points.size(), 1u);
+  EXPECT_EQ(ok.points[0], (P3{1, 2.5, -3}));
+  EXPECT_THROW(read(head + "format=\"binary\">AAAA</DataArray></Points></Piece></PolyData></VTKFile>"),
+               TVF::Invalid_input);
+  EXPECT_THROW(read(head + "format=\"ascii\">1 2</DataArray></Points></Piece></PolyData></VTKFile>"),
+               TVF::Invalid_input);
+  EXPECT_THROW(read("<VTKFile type=\"UnstructuredGrid\"></VTKFile>"), TVF::Invalid_input);
+  EXPECT_THROW(read("not xml at all"), TVF::Invalid_input);
+}
+
+TEST(Exports, RawFieldRoundTripIsExactAndFollowsDirectionalsLayout)
+{
+  Mesh torus = make_torus(12, 8);
+  Field field = ambient_field_map(torus, "wind", 9);
+  const std::string file = temporary_path("wind.rawfield");
+  TVF::write_raw_field(file, torus, field);
+  const std::vector<std::string> lines = lines_of(file);
+  ASSERT_EQ(lines.size(), torus.number_of_faces() + 1);
+  EXPECT_EQ(lines[0], "1 " + std::to_string(torus.number_of_faces()));
+  {
+    std::istringstream first(lines[1]);
+    double x, y, z;
+    first >> x >> y >> z;
+    const Vector_3& w = field[*torus.faces().begin()];
+    EXPECT_EQ(Vector_3(x, y, z), w);
+  }
+  Field back = field_map(torus, "back");
+  TVF::read_raw_field(file, torus, back);
+  for(Face_index f : torus.faces()) EXPECT_EQ(back[f], field[f]);
+
+  // Degree 2: pick either vector of each face.
+  TVF::Raw_field two;
+  two.degree = 2;
+  for(Face_index f : torus.faces())
+  {
+    two.vectors.push_back({field[f].x(), field[f].y(), field[f].z()});
+    two.vectors.push_back({-field[f].y(), field[f].x(), 0.25});
+  }
+  const std::string file2 = temporary_path("two.rawfield");
+  {
+    std::ofstream out(file2);
+    TVF::write_raw_field(out, two);
+  }
+  TVF::read_raw_field(file2, torus, back, 1);
+  for(Face_index f : torus.faces()) EXPECT_EQ(back[f], Vector_3(-field[f].y(), field[f].x(), 0.25));
+  EXPECT_THROW(TVF::read_raw_field(file2, torus, back, 2), TVF::Invalid_input);
+  Mesh other = make_torus(10, 8);
+  Field other_field = field_map(other, "x");
+  EXPECT_THROW(TVF::read_raw_field(file, other, other_field), TVF::Invalid_input);
+  std::istringstream truncated("1 3\n1 2 3\n4 5 6\n");
+  EXPECT_THROW(TVF::read_raw_field(truncated), TVF::Invalid_input);
+  std::istringstream extra("1 1\n1 2 3\n4\n");
+  EXPECT_THROW(TVF::read_raw_field(extra), TVF::Invalid_input);
+}
+
+TEST(Exports, StreamlinesAsObjPlyAndVtpKeepEveryPoint)
+{
+  Mesh sphere = make_icosphere(3);
+  Field field = field_map(sphere, "rotation");
+  rotated_height_gradient(sphere, field);
+  TVF::Mesh_streamline_tracer<Mesh> tracer(sphere, field);
+  TVF::Evenly_spaced_options options;
+  options.separation = 0.1;
+  const std::vector<TVF::Streamline> lines = tracer.evenly_spaced(options);
+  ASSERT_GT(lines.size(), 3u);
+  std::vector<P3> all;
+  std::size_t segments = 0, closed = 0;
+  for(const auto& s : lines)
+  {
+    all.insert(all.end(), s.points.begin(), s.points.end());
+    segments += s.number_of_segments();
+    closed += s.closed;
+  }
+  EXPECT_GT(closed, 0u); // the level circles close
+
+  // OBJ: vertices, and one polyline per streamline (closed ones repeat their first index).
+  const std::string obj = temporary_path("lines.obj");
+  TVF::write_streamlines_obj(obj, lines);
+  std::vector<P3> points;
+  std::vector<std::vector<std::size_t>> polylines;
+  for(const std::string& line : lines_of(obj))
+  {
+    std::istringstream in(line);
+    std::string tag;
+    in >> tag;
+    if(tag == "v")
+    {
+      P3 p;
+      in >> p[0] >> p[1] >> p[2];
+      points.push_back(p);
+    }
+    else if(tag == "l")
+    {
+      polylines.emplace_back();
+      for(std::size_t i; in >> i;) polylines.back().push_back(i);
+    }
+  }
+  EXPECT_EQ(points, all);
+  ASSERT_EQ(polylines.size(), lines.size());
+  std::size_t base = 1;
+  for(std::size_t l = 0; l < lines.size(); ++l)
+  {
+    ASSERT_EQ(polylines[l].size(), lines[l].points.size() + (lines[l].closed ? 1 : 0));
+    EXPECT_EQ(polylines[l].front(), base);
+    if(lines[l].closed) EXPECT_EQ(polylines[l].back(), base);
+    base += lines[l].points.size();
+  }
+
+  // PLY: header with edge elements, vertices with face and streamline, one edge per segment.
+  const std::string ply = temporary_path("lines.ply");
+  TVF::write_streamlines_ply(ply, lines);
+  const std::vector<std::string> text = lines_of(ply);
+  const auto end_header = std::find(text.begin(), text.end(), "end_header");
+  ASSERT_NE(end_header, text.end());
+  EXPECT_NE(std::find(text.begin(), end_header, "element vertex " + std::to_string(all.size())), end_header);
+  EXPECT_NE(std::find(text.begin(), end_header, "element edge " + std::to_string(segments + closed)), end_header);
+  EXPECT_NE(std::find(text.begin(), end_header, "property int vertex1"), end_header);
+  std::size_t row = static_cast<std::size_t>(end_header - text.begin()) + 1;
+  for(std::size_t l = 0; l < lines.size(); ++l)
+    for(std::size_t i = 0; i < lines[l].points.size(); ++i, ++row)
+    {
+      std::istringstream in(text[row]);
+      P3 p;
+      int face, line;
+      in >> p[0] >> p[1] >> p[2] >> face >> line;
+      EXPECT_EQ(p, lines[l].points[i]);
+      EXPECT_EQ(face, lines[l].faces[i]);
+      EXPECT_EQ(line, static_cast<int>(l));
+    }
+  EXPECT_EQ(text.size() - row, segments + closed);
+
+  // VTP polylines, read back with the package's reader.
+  const std::string vtp = temporary_path("lines.vtp");
+  TVF::write_streamlines_vtp(vtp, lines);
+  std::ifstream in(vtp);
+  const TVF::Vtk_polydata data = TVF::read_vtk_polydata(in);
+  EXPECT_EQ(data.points, all);
+  ASSERT_EQ(data.lines.size(), lines.size());
+  const TVF::Vtk_polydata::Array* faces = data.find_point_array("face");
+  ASSERT_NE(faces, nullptr);
+  for(std::size_t i = 0, l = 0; l < lines.size(); ++l)
+    for(int f : lines[l].faces) EXPECT_EQ(faces->values[i++], f);
+}
+
+// ---------------------------------------------------------------------------
+// Charts
+
+TEST(Charts, SvgLineChartHasOneCurvePerSeriesOnLogAxes)
+{
+  TVF::Line_chart chart;
+  chart.title = "error against time";
+  chart.series.push_back({"elephant", {0.01, 0.1, 1, 10}, {1e-2, 1e-4, 1e-6, 1e-8}});
+  chart.series.push_back({"bunny <69k>", {0.02, 0.3, 2}, {3e-3, 2e-5, -1}}); // the last point cannot be drawn
+  const std::string file = temporary_path("chart.svg");
+  TVF::write_svg_line_chart(file, chart);
+  std::ifstream in(file);
+  const std::string svg{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  EXPECT_EQ(svg.compare(0, 5, "<?xml"), 0);
+  EXPECT_NE(svg.find("</svg>"), std::string::npos);
+  EXPECT_NE(svg.find("bunny &lt;69k&gt;"), std::string::npos); // names are escaped
+  EXPECT_NE(svg.find("10<tspan"), std::string::npos);         // log ticks as powers of ten
+  // Parse the polylines: one per series, x growing to the right, smaller errors lower.
+  std::vector<std::vector<std::pair<double, double>>> curves;
+  for(std::size_t at = svg.find("<polyline"); at != std::string::npos; at = svg.find("<polyline", at + 1))
+  {
+    const std::size_t start = svg.find("points=\"", at) + 8, end = svg.find('"', start);
+    std::istringstream points(svg.substr(start, end - start));
+    curves.emplace_back();
+    double x, y;
+    char comma;
+    while(points >> x >> comma >> y) curves.back().emplace_back(x, y);
+  }
+  ASSERT_EQ(curves.size(), 2u);
+  EXPECT_EQ(curves[0].size(), 4u);
+  EXPECT_EQ(curves[1].size(), 2u);
+  for(const auto& c : curves)
+    for(std::size_t i = 1; i < c.size(); ++i)
+    {
+      EXPECT_GT(c[i].first, c[i - 1].first);
+      EXPECT_GT(c[i].second, c[i - 1].second); // SVG y grows downwards
+      EXPECT_GE(c[i].first, 0);
+      EXPECT_LE(c[i].first, chart.width);
+    }
+  // Equal steps in log10 are equal steps on the page.
+  EXPECT_NEAR(curves[0][1].first - curves[0][0].first, curves[0][2].first - curves[0][1].first, 0.02);
+  EXPECT_NEAR(curves[0][1].second - curves[0][0].second, curves[0][2].second - curves[0][1].second, 0.02);
+  TVF::Line_chart bad;
+  bad.series.push_back({"x", {1, 2}, {1}});
+  std::ostringstream sink;
+  EXPECT_THROW(TVF::write_svg_line_chart(sink, bad), TVF::Invalid_input);
+}
+
+// ---------------------------------------------------------------------------
+// Pictures
+
+#ifdef TVF_HAS_CAIRO
+#include <CGAL/Tangent_vector_fields/Field_picture.h>
+#include <cairo.h>
+
+namespace {
+
+struct Image
+{
+  int width = 0, height = 0;
+  std::vector<std::uint32_t> pixels; // 0xAARRGGBB
+  std::uint32_t at(int x, int y) const { return pixels[static_cast<std::size_t>(y) * width + x]; }
+  static int red(std::uint32_t p) { return (p >> 16) & 255; }
+  static int green(std::uint32_t p) { return (p >> 8) & 255; }
+  static int blue(std::uint32_t p) { return p & 255; }
+};
+
+Image read_png(const std::string& file)
+{
+  cairo_surface_t* s = cairo_image_surface_create_from_png(file.c_str());
+  Image image;
+  if(cairo_surface_status(s) == CAIRO_STATUS_SUCCESS)
+  {
+    cairo_surface_flush(s);
+    image.width = cairo_image_surface_get_width(s);
+    image.height = cairo_image_surface_get_height(s);
+    const int stride = cairo_image_surface_get_stride(s);
+    const unsigned char* data = cairo_image_surface_get_data(s);
+    for(int y = 0; y < image.height; ++y)
+      for(int x = 0; x < image.width; ++x)
+        image.pixels.push_back(reinterpret_cast<const std::uint32_t*>(data + static_cast<std::size_t>(y) * stride)[x]);
+  }
+  cairo_surface_destroy(s);
+  return image;
+}
+
+int count_differences(const Image& a, const Image& b)
+{
+  int n = 0;
+  for(std::size_t i = 0; i < a.pixels.size(); ++i) n += (a.pixels[i] & 0xffffff) != (b.pixels[i] & 0xffffff);
+  return n;
+}
+
+TVF::Render_options front_view(int width, int height)
+{
+  TVF::Render_options o;
+  o.width = width;
+  o.height = height;
+  o.camera.projection = TVF::Projection::orthographic;
+  o.camera.view_direction = {0, 0, -1}; // the camera on +z, looking down the z axis; y up
+  o.legend = false;
+  return o;
+}
+
+const std::uint32_t white = 0xffffffu;
+
+} // namespace
+
+TEST(Pictures, SphereFillsTheMiddleAndLeavesTheCornersEmpty)
+{
+  Mesh sphere = make_icosphere(3);
+  TVF::Field_picture<Mesh> picture(sphere, front_view(240, 160));
+  const std::string file = temporary_path("sphere.png");
+  picture.write_png(file);
+  const Image image = read_png(file);
+  ASSERT_EQ(image.width, 240);
+  ASSERT_EQ(image.height, 160);
+  EXPECT_NE(image.at(120, 80) & 0xffffff, white);
+  for(auto c : {std::make_pair(0, 0), std::make_pair(239, 0), std::make_pair(0, 159), std::make_pair(239, 159)})
+    EXPECT_EQ(image.at(c.first, c.second) & 0xffffff, white);
+  // The disc covers pi r^2 pixels, r = half the usable height (margin 4%).
+  int covered = 0;
+  for(std::uint32_t p : image.pixels) covered += (p & 0xffffff) != white;
+  const double r = 160 * (1 - 2 * 0.04) / 2;
+  EXPECT_NEAR(covered, M_PI * r * r, 0.05 * M_PI * r * r);
+  // Left and right of the disc are empty; lit from the upper left, so brighter there.
+  EXPECT_EQ(image.at(120 - static_cast<int>(r) - 3, 80) & 0xffffff, white);
+  EXPECT_EQ(image.at(120 + static_cast<int>(r) + 3, 80) & 0xffffff, white);
+  EXPECT_GT(Image::green(image.at(120 - 30, 80 - 30)), Image::green(image.at(120 + 30, 80 + 30)));
+}
+
+TEST(Pictures, LinesBehindTheSurfaceAreHidden)
+{
+  Mesh sphere = make_icosphere(4);
+  Field field = field_map(sphere, "rotation");
+  rotated_height_gradient(sphere, field);
+  TVF::Mesh_streamline_tracer<Mesh> tracer(sphere, field);
+  // Level circles of J grad z: one on the front half (z = 0.5, facing the camera),
+  // one on the back (z = -0.5).
+  auto circle_at = [&](double z) {
+    for(Face_index f : sphere.faces())
+    {
+      std::vector<Point_3> p;
+      for(Vertex_index v : vertices_around_face(sphere.halfedge(f), sphere)) p.push_back(sphere.point(v));
+      const Point_3 m = CGAL::centroid(p[0], p[1], p[2]);
+      if(std::abs(m.z() - z) < 0.02) return tracer.trace(f, m);
+    }
+    return TVF::Streamline();
+  };
+  const TVF::Streamline front = circle_at(0.5), back = circle_at(-0.5);
+  ASSERT_TRUE(front.closed);
+  ASSERT_TRUE(back.closed);
+  TVF::Line_style red;
+  red.colour = {1, 0, 0};
+  red.width = 2;
+  red.opacity = 1;
+  TVF::Field_picture<Mesh> plain(sphere, front_view(200, 200));
+  TVF::Field_picture<Mesh> with_back(sphere, front_view(200, 200));
+  with_back.add_streamlines({back}, red);
+  TVF::Field_picture<Mesh> with_front(sphere, front_view(200, 200));
+  with_front.add_streamlines({front}, red);
+  plain.write_png(temporary_path("plain.png"));
+  with_back.write_png(temporary_path("back.png"));
+  with_front.write_png(temporary_path("front.png"));
+  const Image a = read_png(temporary_path("plain.png")), b = read_png(temporary_path("back.png")),
+              c = read_png(temporary_path("front.png"));
+  EXPECT_EQ(count_differences(a, b), 0);
+  // The front circle (radius sqrt(3)/2 in a unit sphere of radius 92 pixels) is drawn:
+  // a red ring of about 2 pi 80 pixels' length and 2 pixels' width.
+  const int changed = count_differences(a, c);
+  EXPECT_GT(changed, 2 * M_PI * 80 * 1.5);
+  int red_pixels = 0;
+  for(std::uint32_t p : c.pixels) red_pixels += Image::red(p) > 200 && Image::green(p) < 80 && Image::blue(p) < 80;
+  EXPECT_GT(red_pixels, 2 * M_PI * 80);
+  // On the ring: the pixel at distance 0.866 r from the centre, above it.
+  const double r = 200 * (1 - 2 * 0.04) / 2;
+  EXPECT_GT(Image::red(c.at(100, static_cast<int>(std::lround(100 - 0.866 * r)))), 150);
+}
+
+TEST(Pictures, ColourMapRangeAndLegend)
+{
+  EXPECT_NEAR(TVF::colour_at(TVF::Colour_map::viridis, 0).r, 68 / 255., 1e-12);
+  EXPECT_NEAR(TVF::colour_at(TVF::Colour_map::viridis, 1).g, 231 / 255., 1e-12);
+  EXPECT_NEAR(TVF::colour_at(TVF::Colour_map::cool_warm, 0.5).b, 221 / 255., 1e-12);
+  EXPECT_NEAR(TVF::colour_at(TVF::Colour_map::cool_warm, -3).b, 192 / 255., 1e-12); // clamped
+
+  Mesh sphere = make_icosphere(3);
+  auto height = sphere.add_property_map<Face_index, double>("f:height", 0.).first;
+  for(Face_index f : sphere.faces())
+  {
+    double y = 0;
+    for(Vertex_index v : vertices_around_face(sphere.halfedge(f), sphere)) y += sphere.point(v).y() / 3;
+    height[f] = y;
+  }
+  TVF::Render_options options = front_view(400, 300);
+  options.legend = true;
+  TVF::Field_picture<Mesh> picture(sphere, options);
+  TVF::Scalar_colouring colouring;
+  colouring.label = "height";
+  picture.colour_faces(height, colouring);
+  const auto range = picture.renderer().colour_range();
+  double lo = 1e300, hi = -1e300;
+  for(Face_index f : sphere.faces())
+  {
+    lo = std::min(lo, height[f]);
+    hi = std::max(hi, height[f]);
+  }
+  EXPECT_EQ(range.first, lo);
+  EXPECT_EQ(range.second, hi);
+  const std::string file = temporary_path("height.png");
+  picture.write_png(file);
+  const Image image = read_png(file);
+  // Model left of the legend: high values (yellow) at the top, low (purple) at the bottom.
+  const int cx = (400 - std::max(110, 400 / 9)) / 2;
+  const std::uint32_t top = image.at(cx, 40), bottom = image.at(cx, 260);
+  EXPECT_GT(Image::red(top) + Image::green(top), 2 * Image::blue(top));
+  EXPECT_GT(Image::blue(bottom), Image::green(bottom));
+  // The colour bar: yellow at its top, purple at its bottom, right of the model.
+  bool yellow = false, purple = false;
+  for(int x = 400 - 110; x < 400; ++x)
+  {
+    const std::uint32_t t = image.at(x, static_cast<int>(0.2 * 300) + 3), b = image.at(x, static_cast<int>(0.8 * 300) - 3);
+    yellow = yellow || (Image::red(t) > 200 && Image::green(t) > 200 && Image::blue(t) < 90);
+    purple = purple || (Image::red(b) < 90 && Image::green(b) < 30 && Image::blue(b) > 60);
+  }
+  EXPECT_TRUE(yellow);
+  EXPECT_TRUE(purple);
+
+  // Symmetric range with clipping: [-m, m] from the 10% / 90% quantiles.
+  TVF::Scalar_colouring signed_colouring;
+  signed_colouring.map = TVF::Colour_map::cool_warm;
+  signed_colouring.symmetric = true;
+  signed_colouring.clip_fraction = 0.1;
+  picture.colour_faces(height, signed_colouring);
+  const auto clipped = picture.renderer().colour_range();
+  EXPECT_EQ(clipped.first, -clipped.second);
+  EXPECT_LT(clipped.second, hi);
+  EXPECT_GT(clipped.second, 0.5 * hi);
+  std::vector<double> wrong(3, 0.);
+  EXPECT_THROW(picture.renderer().colour_faces(wrong), TVF::Invalid_input);
+}
+
+TEST(Pictures, ArrowsFurAndSvg)
+{
+  Mesh torus = make_torus(40, 20);
+  Field field = field_map(torus, "rotation");
+  rotated_height_gradient(torus, field);
+  TVF::Render_options options = front_view(300, 200);
+  options.camera.view_direction = {0, 0, 0}; // azimuth and elevation
+  options.camera.up = {0, 0, 1};
+  options.camera.elevation = 35;
+  options.camera.projection = TVF::Projection::perspective;
+  TVF::Field_picture<Mesh> plain(torus, options), arrows(torus, options), fur(torus, options);
+  arrows.add_arrows(field);
+  TVF::Fur_options hair;
+  hair.number_of_strokes = 800;
+  hair.length = 0.05;
+  const auto strokes = fur.add_fur(field, hair);
+  EXPECT_GT(strokes.size(), 700u);
+  plain.write_png(temporary_path("torus.png"));
+  arrows.write_png(temporary_path("torus_arrows.png"));
+  fur.write_png(temporary_path("torus_fur.png"));
+  const Image a = read_png(temporary_path("torus.png")), b = read_png(temporary_path("torus_arrows.png")),
+              c = read_png(temporary_path("torus_fur.png"));
+  ASSERT_EQ(a.width, 300);
+  EXPECT_NE(a.at(150, 100 - 55) & 0xffffff, white); // the front of the ring
+  EXPECT_EQ(a.at(2, 2) & 0xffffff, white);
+  EXPECT_GT(count_differences(a, b), 1000);
+  EXPECT_GT(count_differences(a, c), 1000);
+  // Overlays stay on the surface: no changed pixel is more than a few pixels away from it.
+  int stray = 0;
+  for(int y = 0; y < 200; ++y)
+    for(int x = 0; x < 300; ++x)
+    {
+      if((a.at(x, y) & 0xffffff) == (c.at(x, y) & 0xffffff)) continue;
+      bool near_surface = false;
+      for(int dy = -3; dy <= 3 && !near_surface; ++dy)
+        for(int dx = -3; dx <= 3 && !near_surface; ++dx)
+        {
+          const int u = std::min(std::max(x + dx, 0), 299), v = std::min(std::max(y + dy, 0), 199);
+          near_surface = (a.at(u, v) & 0xffffff) != white;
+        }
+      stray += !near_surface;
+    }
+  EXPECT_EQ(stray, 0);
+
+  const std::string svg_file = temporary_path("torus.svg");
+  fur.write_svg(svg_file);
+  std::ifstream in(svg_file);
+  const std::string svg{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  EXPECT_NE(svg.find("<svg"), std::string::npos);
+  EXPECT_NE(svg.find("width=\"300"), std::string::npos);
+  EXPECT_NE(svg.find("<image"), std::string::npos); // the surface
+  EXPECT_NE(svg.find("<path"), std::string::npos);  // the strokes, as vectors
+  EXPECT_THROW(fur.write_png("/nonexistent-folder/x.png"), TVF::Invalid_input);
+}
+#endif
