@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 
 #include <CGAL/Tangent_vector_fields/internal/Basis_rows.h>
+#include <CGAL/Tangent_vector_fields/errors.h>
 
 #include <cmath>
 #include <map>
@@ -9,6 +10,13 @@
 namespace CGAL {
 namespace Tangent_vector_fields {
 namespace internal {
+
+int checked_basis_size(const Eigenfield_basis& basis, int d)
+{
+  if(d < 0 || d > basis.size())
+    throw Invalid_input("basis size " + std::to_string(d) + " out of range [0, " + std::to_string(basis.size()) + "]");
+  return d == 0 ? basis.size() : d;
+}
 
 Basis_rows::Basis_rows(const Eigenfield_basis& basis, int d) : basis_(basis), d_(d)
 {

@@ -16,19 +16,13 @@ int harmonic_count(const Eigenfield_basis& basis, int d)
   for(int k = 0; k < d; ++k) h += basis.type(k) == Eigenfield_type::harmonic;
   return h;
 }
-int checked_size(const Eigenfield_basis& basis, int d)
-{
-  if(d < 0 || d > basis.size())
-    throw Invalid_input("basis size " + std::to_string(d) + " out of range [0, " + std::to_string(basis.size()) + "]");
-  return d == 0 ? basis.size() : d;
-}
 } // namespace
 
 Reduced_spline_solver::Reduced_spline_solver(std::shared_ptr<const Eigenfield_basis> basis, int basis_size,
                                              const Spline_options& options)
   : Spline_solver(std::shared_ptr<const Operator_matrices>(basis, &basis->operators()),
-                  harmonic_count(*basis, checked_size(*basis, basis_size)), options),
-    basis_(std::move(basis)), d_(checked_size(*basis_, basis_size)), rows_in_basis_(*basis_, d_)
+                  harmonic_count(*basis, internal::checked_basis_size(*basis, basis_size)), options),
+    basis_(std::move(basis)), d_(internal::checked_basis_size(*basis_, basis_size)), rows_in_basis_(*basis_, d_)
 {
   update_energy();
 }

@@ -181,19 +181,11 @@ Eigen::MatrixXd Soft_field_design::undetermined_directions(
 
 // ---------------------------------------------------------------- reduced
 
-namespace {
-int checked_size(const Eigenfield_basis& basis, int d)
-{
-  if(d < 0 || d > basis.size())
-    throw Invalid_input("basis size " + std::to_string(d) + " out of range [0, " + std::to_string(basis.size()) + "]");
-  return d == 0 ? basis.size() : d;
-}
-} // namespace
 
 Reduced_soft_design::Reduced_soft_design(std::shared_ptr<const Eigenfield_basis> basis, int basis_size,
                                          const Soft_design_options& options)
   : Soft_field_design(std::shared_ptr<const Operator_matrices>(basis, &basis->operators()), options),
-    basis_(std::move(basis)), d_(checked_size(*basis_, basis_size)), rows_in_basis_(*basis_, d_)
+    basis_(std::move(basis)), d_(internal::checked_basis_size(*basis_, basis_size)), rows_in_basis_(*basis_, d_)
 {
   diagonal_.resize(d_);
   for(int k = 0; k < d_; ++k)

@@ -18,6 +18,10 @@ namespace CGAL {
 namespace Tangent_vector_fields {
 namespace internal {
 
+/// `d` itself, or the whole basis for `d = 0`.
+/// \throws Invalid_input if `d` is negative or larger than the basis.
+int checked_basis_size(const Eigenfield_basis& basis, int d);
+
 /// `r U = (G^T r)^T Phi Lambda^-1/2` on exact elements, `((J G*)^T r)^T Psi Mu^-1/2`
 /// on coexact ones and `r U_h` on harmonic ones: a row touching a few faces touches a
 /// few vertices and edges, so it costs `O(d)` per touched vertex or edge.
