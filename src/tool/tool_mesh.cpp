@@ -139,10 +139,14 @@ Tool_mesh::Tool_mesh(const std::string& path, bool mollify) : impl_(std::make_un
   }
   catch(const TVF::Invalid_mesh& e)
   {
-    std::string hint;
-    if(e.defect() == TVF::Mesh_defect::degenerate_face && !mollify) hint = " (try --mollify)";
-    if(e.defect() == TVF::Mesh_defect::non_triangle_face) hint = " (the tool needs a triangle mesh)";
-    throw Tool_error("'" + path + "': " + one_line(e.what()) + hint);
+    // The library's message names its C++ parameter; the tool has an option for it.
+    std::string reason = one_line(e.what());
+    const std::string parameter = "use the named parameter use_intrinsic_mollification(true)";
+    const std::size_t at = reason.find(parameter);
+    if(at != std::string::npos) reason.replace(at, parameter.size(), mollify ? "mollification did not help" : "use --mollify");
+    else if(e.defect() == TVF::Mesh_defect::degenerate_face && !mollify) reason += " (try --mollify)";
+    if(e.defect() == TVF::Mesh_defect::non_triangle_face) reason += " (the tool needs a triangle mesh)";
+    throw Tool_error("'" + path + "': " + reason);
   }
   matrices_ = impl_->operators->shared_matrices();
 }
