@@ -119,10 +119,9 @@ private:
   po::variables_map values_;
 };
 
-/// The normal report: stdout, or nothing with `--quiet`.
-std::ostream& report();
+/// With `--quiet`, `say` prints nothing and no progress is shown.
 void set_quiet(bool quiet);
-/// printf into the report.
+/// The report: printf to stdout (nothing with `--quiet`).
 void say(const char* format, ...) __attribute__((format(printf, 1, 2)));
 
 /// Progress on stderr, drawn only when stderr is a terminal (and not `--quiet`), so

@@ -117,22 +117,10 @@ void Command_line::print_help(std::ostream& out) const
 namespace {
 bool quiet_mode = false;
 
-struct Null_buffer : std::streambuf
-{
-  int overflow(int c) override { return c; }
-};
-
 bool stderr_is_terminal() { return !quiet_mode && isatty(STDERR_FILENO) != 0; }
 } // namespace
 
 void set_quiet(bool quiet) { quiet_mode = quiet; }
-
-std::ostream& report()
-{
-  static Null_buffer buffer;
-  static std::ostream null_stream(&buffer);
-  return quiet_mode ? null_stream : std::cout;
-}
 
 void say(const char* format, ...)
 {

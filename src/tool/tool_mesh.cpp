@@ -63,6 +63,7 @@ void read_mesh(const std::string& path, Mesh& mesh)
         if(ext == "off") ok = CGAL::IO::read_OFF(path, mesh, CGAL::parameters::verbose(false));
         else if(ext == "obj") ok = CGAL::IO::read_OBJ(path, mesh, CGAL::parameters::verbose(false));
         else if(ext == "stl") ok = CGAL::IO::read_STL(path, mesh, CGAL::parameters::verbose(false));
+        else if(ext == "ts") ok = CGAL::IO::read_GOCAD(path, mesh, CGAL::parameters::verbose(false));
       }
     }
   }
