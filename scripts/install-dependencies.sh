@@ -6,6 +6,7 @@ if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 packages=(
   build-essential cmake
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev
+  libboost-program-options-dev               # the command-line tool tvf
   libeigen3-dev libspectra-dev
   libsuitesparse-dev libopenblas0-pthread   # CHOLMOD, with OpenBLAS as its BLAS (about 3x faster than the reference BLAS)
   libgtest-dev libbenchmark-dev

@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# Regenerates the pictures in doc/gallery/ with the command-line tool: builds tvf if
+# needed, then decomposes, filters, designs and draws fields on CGAL's elephant (and a
+# torus knot for a harmonic field).  Intermediate fields and bases go to build/gallery/.
+# Needs the dependencies of scripts/test.sh (run that, or scripts/demo.sh, once first).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/build.sh --target tvf >/dev/null
+
+tvf=build/tvf
+meshes=build/cgal-data/data/meshes
+elephant=$meshes/elephant.off
+knot=$meshes/knot1.off
+gallery=doc/gallery
+work=build/gallery
+mkdir -p "$gallery" "$work"
+# One camera for the elephant: from the side, a little above; y is up.
+view=(--azimuth 0 --elevation 10 --width 800 --height 600)
+small=(--azimuth 0 --elevation 10 --width 400 --height 300 --no-legend --line-width 0.9 --separation 0.025)
+
+echo "1. Hodge decomposition of the demo field (a wind, a swirl and a source)"
+$tvf decompose $elephant --demo-field -q --save-field $work/field.tvf --exact $work/exact.tvf \
+  --coexact $work/coexact.tvf --harmonic $work/harmonic.tvf
+$tvf render $elephant -q --field $work/exact.tvf --color divergence --streamlines "${view[@]}" \
+  --title "curl-free part: streamlines over its divergence" -o $gallery/hodge_exact.png
+$tvf render $elephant -q --field $work/coexact.tvf --color curl --fur --strokes 4000 --length 0.03 \
+  --line-width 1.4 "${view[@]}" --title "divergence-free part: fur over its curl" -o $gallery/hodge_coexact.png
+$tvf render $elephant -q --field $work/harmonic.tvf --color magnitude --clip 0.1 --streamlines "${view[@]}" \
+  --title "harmonic part: it lives on the handles (genus 3)" -o $gallery/hodge_harmonic.png
+
+echo "2. A harmonic field of a torus knot (genus 1)"
+$tvf basis $knot -n 12 -q -o $work/knot.tvfb
+$tvf eigenfield $knot -q --basis $work/knot.tvfb -k 1 -o $work/knot_harmonic.tvf
+$tvf render $knot -q --field $work/knot_harmonic.tvf --color magnitude --streamlines --separation 0.015 \
+  --azimuth 0 --elevation 30 --width 800 --height 600 --title "a harmonic field of a torus knot" \
+  -o $gallery/knot_harmonic.png
+
+echo "3. Eigenfields of the Hodge-Laplacian (the 300 lowest, a progress bar on terminals)"
+$tvf basis $elephant -n 300 -q -o $work/elephant.tvfb
+for k in 6 7 40 41; do
+  $tvf eigenfield $elephant --basis $work/elephant.tvfb -k $k -o $work/eigenfield_$k.tvf > $work/eigenfield_$k.txt
+  # "element 7: exact (curl-free), eigenvalue 5.91419 (lambda * area = 7.36293)"
+  type=$(grep -oE 'coexact|exact|harmonic' $work/eigenfield_$k.txt | head -1)
+  value=$(sed -E 's/.*lambda \* area = ([0-9.]+).*/\1/' $work/eigenfield_$k.txt | head -1)
+  colour=divergence
+  if [ "$type" = coexact ]; then colour=curl; fi
+  $tvf render $elephant -q --field $work/eigenfield_$k.tvf --color $colour --streamlines "${small[@]}" \
+    --title "$type, λ·area = $(printf '%.4g' "$value")" -o $gallery/eigenfield_$k.png
+done
+
+echo "4. A designed field: vectors, a source and a vortex (doc/gallery/elephant_constraints.json)"
+$tvf design $elephant --constraints $gallery/elephant_constraints.json -q -o $work/designed.tvf
+$tvf render $elephant -q --field $work/designed.tvf --color curl --streamlines "${view[@]}" \
+  --title "designed: 10 vectors, a source and a vortex" -o $gallery/designed.png
+
+echo "5. The designed field, low-pass filtered in the basis"
+$tvf filter $elephant --basis $work/elephant.tvfb --field $work/designed.tvf --low-pass 0.02 -q \
+  -o $work/designed_low_pass.tvf
+$tvf render $elephant -q --field $work/designed_low_pass.tvf --color curl --streamlines "${view[@]}" \
+  --title "low-pass exp(-0.02 λ·area): the vortex is spread out" -o $gallery/designed_low_pass.png
+
+ls -l $gallery/*.png

@@ -1,0 +1,537 @@
+// Copyright (c) 2026 The Tangent_vector_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Subcommands that make and show fields: design, render, streamlines, export.  They
+// work on frame coordinates through the index-based classes (no Surface_mesh here).
+
+#include "tool.h"
+
+#include <CGAL/Tangent_vector_fields/Eigenfield_basis.h>
+#include <CGAL/Tangent_vector_fields/Full_spline_solver.h>
+#include <CGAL/Tangent_vector_fields/Hodge_solver.h>
+#include <CGAL/Tangent_vector_fields/Reduced_spline_solver.h>
+#include <CGAL/Tangent_vector_fields/Soft_field_design.h>
+#include <CGAL/Tangent_vector_fields/Streamline_tracer.h>
+#include <CGAL/Tangent_vector_fields/constraint_file_io.h>
+#include <CGAL/Tangent_vector_fields/errors.h>
+#include <CGAL/Tangent_vector_fields/field_files.h>
+#ifdef TVF_HAS_CAIRO
+#include <CGAL/Tangent_vector_fields/Field_renderer.h>
+#endif
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <map>
+
+namespace tvf_tool {
+
+namespace {
+
+TVF::Length_unit length_unit(const std::string& name)
+{
+  if(name == "diagonal") return TVF::Length_unit::bounding_box_diagonal;
+  if(name == "edge") return TVF::Length_unit::mean_edge_length;
+  if(name == "absolute") return TVF::Length_unit::absolute;
+  throw Usage_error("unknown length unit '" + name + "' (diagonal, edge or absolute)");
+}
+
+// A summary of why the ends of the streamlines stopped, such as "boundary 12, closed_loop 3".
+std::string stop_summary(const std::vector<TVF::Streamline>& lines)
+{
+  std::map<std::string, int> counts;
+  for(const TVF::Streamline& s : lines)
+    for(TVF::Streamline_stop stop : {s.backward_stop, s.forward_stop})
+      if(stop != TVF::Streamline_stop::none) ++counts[TVF::to_string(stop)];
+  std::string text;
+  for(const auto& c : counts) text += (text.empty() ? "" : ", ") + c.first + " " + std::to_string(c.second);
+  return text.empty() ? "none" : text;
+}
+
+void add_streamline_options(Command_line& command)
+{
+  command.group("streamlines").add_options()
+    ("separation", po::value<double>()->default_value(0.02)->value_name("S"),
+     "distance between evenly spaced streamlines (in --unit)")
+    ("seed", po::value<unsigned>()->default_value(1)->value_name("N"), "random seed of the seeds and fur roots");
+  command.group("fur").add_options()
+    ("strokes", po::value<int>()->value_name("N"), "number of fur strokes (default 5000, or from --density)")
+    ("density", po::value<double>()->value_name("D"), "instead: strokes per unit area (mesh units squared)")
+    ("length", po::value<double>()->default_value(0.03)->value_name("L"), "length of a stroke (in --unit)")
+    ("scale-by-magnitude", "stroke lengths proportional to the magnitude at their roots");
+}
+
+TVF::Evenly_spaced_options evenly_spaced_options(const Command_line& command, TVF::Length_unit unit)
+{
+  TVF::Evenly_spaced_options even;
+  even.separation = command.get<double>("separation");
+  if(!(even.separation > 0) || !std::isfinite(even.separation)) throw Usage_error("'--separation' must be positive");
+  even.separation_unit = unit;
+  even.random_seed = command.get<unsigned>("seed");
+  return even;
+}
+
+TVF::Fur_options fur_options(const Command_line& command, TVF::Length_unit unit)
+{
+  TVF::Fur_options fur;
+  command.at_most_one({"strokes", "density"});
+  fur.number_of_strokes = command.has("strokes") ? command.get<int>("strokes") : 0;
+  if(command.has("density")) fur.density = command.get<double>("density");
+  else if(!command.has("strokes")) fur.number_of_strokes = 5000;
+  if(fur.number_of_strokes < 0 || (command.has("strokes") && fur.number_of_strokes == 0))
+    throw Usage_error("'--strokes' must be positive");
+  if(command.has("density") && !(fur.density > 0)) throw Usage_error("'--density' must be positive");
+  fur.length = command.get<double>("length");
+  if(!(fur.length > 0) || !std::isfinite(fur.length)) throw Usage_error("'--length' must be positive");
+  fur.length_unit = unit;
+  fur.scale_length_by_magnitude = command.has("scale-by-magnitude");
+  fur.random_seed = command.get<unsigned>("seed");
+  return fur;
+}
+
+#ifdef TVF_HAS_CAIRO
+TVF::Colour parse_colour(const std::string& text)
+{
+  static const std::map<std::string, TVF::Colour> names = {
+      {"black", {0.08, 0.08, 0.08}}, {"white", {1, 1, 1}},     {"grey", {0.5, 0.5, 0.5}},  {"gray", {0.5, 0.5, 0.5}},
+      {"red", {0.8, 0.1, 0.1}},      {"blue", {0.1, 0.2, 0.8}}, {"green", {0.1, 0.6, 0.2}}, {"orange", {0.95, 0.55, 0.1}}};
+  const auto it = names.find(text);
+  if(it != names.end()) return it->second;
+  unsigned r = 0, g = 0, b = 0;
+  char end = 0;
+  if(text.size() == 7 && text[0] == '#' && std::sscanf(text.c_str() + 1, "%2x%2x%2x%c", &r, &g, &b, &end) == 3)
+    return {r / 255., g / 255., b / 255.};
+  throw Usage_error("unknown colour '" + text + "' (black, white, grey, red, blue, green, orange or #rrggbb)");
+}
+
+std::array<double, 3> parse_direction(const std::string& text)
+{
+  static const std::map<std::string, std::array<double, 3>> axes = {
+      {"x", {{1, 0, 0}}}, {"y", {{0, 1, 0}}}, {"z", {{0, 0, 1}}}, {"-x", {{-1, 0, 0}}}, {"-y", {{0, -1, 0}}}, {"-z", {{0, 0, -1}}}};
+  const auto it = axes.find(text);
+  if(it != axes.end()) return it->second;
+  std::array<double, 3> d{{0, 0, 0}};
+  char end = 0;
+  if(std::sscanf(text.c_str(), "%lf,%lf,%lf%c", &d[0], &d[1], &d[2], &end) == 3 &&
+     std::isfinite(d[0] + d[1] + d[2]) && d[0] * d[0] + d[1] * d[1] + d[2] * d[2] > 0)
+    return d;
+  throw Usage_error("'" + text + "' is not a direction (x, y, z, -x, -y, -z or three numbers a,b,c)");
+}
+#endif
+
+} // namespace
+
+// --- design -------------------------------------------------------------------------------------
+
+int design_command(const Arguments& args)
+{
+  Command_line command(
+      "tvf design <mesh> --constraints FILE.json [--basis FILE [-d D]] [--soft] [--omega W] -o FILE",
+      "Designs a field from constraints (vectors, directions, divergences, curls; JSON, see doc/manual.md).\n"
+      "By default the tangent vector field spline at full resolution (min E_B + omega E_D subject to the\n"
+      "constraints, exact); with --basis the same spline in the span of a spectral basis (the real-time\n"
+      "editor's answer); with --soft the soft-constrained design of Fisher et al. (min E_D + omega E_B +\n"
+      "sum w_i |C_i x - c_i|^2, weights from the file), full or reduced.  Prints the constraint residual and\n"
+      "the warnings of the solver.");
+  command.positional("mesh", "the mesh file");
+  command.group("design").add_options()
+    ("constraints", po::value<std::string>()->value_name("FILE"), "the constraints (JSON)")
+    ("basis", po::value<std::string>()->value_name("FILE"), "solve in the span of this basis (.tvfb)")
+    ("basis-size,d", po::value<int>()->value_name("D"), "use the first D elements of the basis (default: all)")
+    ("soft", "soft constraints (weights from the file) instead of a spline")
+    ("omega", po::value<double>()->value_name("W"),
+     "spline tension (or the soft design's biharmonic weight), for the mesh scaled to unit area; default: the "
+     "file's \"omega\", else 0");
+  add_output_options(command, "the designed field", "design");
+  if(!command.parse(args)) return 0; // --help
+  command.require("constraints");
+  if(command.has("basis-size") && !command.has("basis")) throw Usage_error("'--basis-size' needs '--basis'");
+  const Tool_mesh mesh(command.positional_value(), command.mollify());
+
+  const std::string constraint_path = command.get<std::string>("constraints");
+  {
+    std::ifstream in(constraint_path);
+    if(!in) throw Tool_error("cannot open constraint file '" + constraint_path + "': " + std::strerror(errno));
+  }
+  TVF::Constraint_file file;
+  try
+  {
+    file = TVF::read_constraint_file(constraint_path, mesh.matrices());
+  }
+  catch(const TVF::Invalid_input& e)
+  {
+    throw Tool_error(about(constraint_path, one_line(e.what())));
+  }
+  if(file.constraints.empty()) throw Tool_error("'" + constraint_path + "' has no constraints: the design would be zero");
+  const double omega = command.has("omega") ? command.get<double>("omega") : file.omega;
+  if(!(omega >= 0) || !std::isfinite(omega)) throw Usage_error("'--omega' must be a finite number >= 0");
+  const bool soft = command.has("soft");
+  const bool weighted = std::any_of(file.weights.begin(), file.weights.end(), [](double w) { return w != 1; });
+
+  std::shared_ptr<const TVF::Eigenfield_basis> basis;
+  if(command.has("basis")) basis = load_basis(mesh, command.get<std::string>("basis"));
+  const int d = command.has("basis-size") ? command.get<int>("basis-size") : 0;
+  if(command.has("basis-size") && (d <= 0 || d > basis->size()))
+    throw Tool_error("'--basis-size' must lie in [1, " + std::to_string(basis->size()) + "] (the basis size), not " +
+                     std::to_string(d));
+
+  say("mesh: %s, %d faces; %s\n", mesh.path().c_str(), mesh.number_of_faces(),
+      mesh.intrinsic().topology().summary().c_str());
+  std::string method = soft ? "soft design" : "spline";
+  method += basis ? ", reduced to " + std::to_string(d > 0 ? d : basis->size()) + " eigenfields" : ", full resolution";
+  say("design: %s, omega %g, %zu constraints from %s\n", method.c_str(), omega, file.constraints.size(),
+      constraint_path.c_str());
+  if(weighted && !soft) say("  note: the file's weights are used by --soft only\n");
+
+  const auto start = std::chrono::steady_clock::now();
+  Eigen::VectorXd x;
+  std::vector<std::string> warnings;
+  Step step("solving");
+  if(!soft)
+  {
+    TVF::Spline_options options;
+    options.omega = omega;
+    std::unique_ptr<TVF::Spline_solver> solver;
+    if(basis) solver = std::make_unique<TVF::Reduced_spline_solver>(basis, d, options);
+    else solver = std::make_unique<TVF::Full_spline_solver>(std::make_shared<TVF::Hodge_solver>(mesh.shared_matrices()), options);
+    solver->add(file.constraints);
+    x = solver->field();
+    const TVF::Spline_report& report = solver->report();
+    step.done();
+    say("  %d constraints, %d rows; smallest independence (sin^2 of a row's angle to the others) %.3g\n",
+        report.constraints, report.rows, report.smallest_independence);
+    say("  constraint residual %.2e (largest |C x - c| / largest |c|); energy E_B + omega E_D = %.6g\n",
+        report.constraint_residual, report.energy);
+    if(report.undetermined_harmonic > 0)
+      say("  %d harmonic directions are seen by no constraint (set to zero)\n", report.undetermined_harmonic);
+    warnings = report.warnings;
+  }
+  else
+  {
+    TVF::Soft_design_options options;
+    options.omega = omega;
+    std::unique_ptr<TVF::Soft_field_design> design;
+    if(basis) design = std::make_unique<TVF::Reduced_soft_design>(basis, d, options);
+    else design = std::make_unique<TVF::Full_soft_design>(std::make_shared<TVF::Hodge_solver>(mesh.shared_matrices()), options);
+    for(std::size_t i = 0; i < file.constraints.size(); ++i) design->add(file.constraints[i], file.weights[i]);
+    x = design->field();
+    step.done();
+    // Soft constraints are met only approximately: how far, and where worst.
+    double largest_value = 0, largest_residual = 0;
+    std::size_t worst = 0;
+    for(std::size_t i = 0; i < file.constraints.size(); ++i)
+      for(const TVF::Constraint_row& row : TVF::constraint_rows(mesh.matrices(), file.constraints[i]))
+      {
+        largest_value = std::max(largest_value, std::abs(row.value) * row.unit_area_scale);
+        const double r = std::abs(row.dot(x) - row.value) * row.unit_area_scale;
+        if(r > largest_residual)
+        {
+          largest_residual = r;
+          worst = i;
+        }
+      }
+    say("  energy E_D + omega E_B = %.6g; constraint residual %.3g (largest |C x - c| / largest |c|, unit-area "
+        "scale), worst at constraint %zu (%s)\n",
+        design->energy(), largest_value > 0 ? largest_residual / largest_value : largest_residual, worst,
+        file.constraints[worst].describe().c_str());
+    if(design->undetermined_harmonic() > 0)
+      say("  %d harmonic directions are seen by no constraint (set to zero)\n", design->undetermined_harmonic());
+  }
+  say("  solved in %.3f s; |field| = %.6g (L2)\n", seconds_since(start), field_norm(mesh.matrices(), x));
+  if(warnings.empty()) say("  warnings: none\n");
+  for(const std::string& w : warnings) say("  warning: %s\n", one_line(w).c_str());
+  if(!write_outputs(command, mesh, x)) say("(no --output given: nothing written)\n");
+  return 0;
+}
+
+// --- render ---------------------------------------------------------------------------------------
+
+int render_command(const Arguments& args)
+{
+  Command_line command(
+      "tvf render <mesh> [--field FILE] [--color Q] [--streamlines | --fur | --arrows] [view] -o FILE.png|.svg",
+      "Draws the mesh, coloured by a quantity of the field, with evenly spaced streamlines, fur strokes\n"
+      "(thick at the root, thin at the tip) or arrows on top; lines behind the surface are hidden.  With a\n"
+      "field and no overlay option, streamlines are drawn.  PNG or SVG (the surface as an embedded image,\n"
+      "lines and the colour bar as vectors).");
+  command.positional("mesh", "the mesh file");
+  add_field_options(command);
+  command.group("picture").add_options()
+    ("color", po::value<std::string>()->value_name("Q"),
+     "colour the surface by: divergence, curl (vertex values, blue-grey-red), magnitude (faces, viridis) or "
+     "none; default: magnitude with a field, none without")
+    ("colormap", po::value<std::string>()->value_name("MAP"), "viridis, cool_warm or greys instead of the default")
+    ("clip", po::value<double>()->default_value(0.02)->value_name("F"),
+     "leave this fraction of the values out at each end of the colour range")
+    ("streamlines", "draw evenly spaced streamlines")
+    ("fur", "draw fur strokes")
+    ("arrows", "draw arrows on a screen grid")
+    ("no-overlay", "draw only the colours")
+    ("arrow-spacing", po::value<double>()->value_name("PX"), "distance between arrows in pixels (default width / 45)")
+    ("constant-arrows", "arrows of one length instead of proportional to the magnitude")
+    ("line-color", po::value<std::string>()->value_name("C"),
+     "lines and arrows: black, white, grey, red, blue, green, orange or #rrggbb (default: white on viridis, else black)")
+    ("line-width", po::value<double>()->value_name("PX"), "line width in pixels (default 1.3, fur 1.6)")
+    ("unit", po::value<std::string>()->default_value("diagonal")->value_name("U"),
+     "unit of --separation and --length: diagonal (of the bounding box), edge (mean edge length) or absolute");
+  add_streamline_options(command);
+  command.group("view").add_options()
+    ("width", po::value<int>()->default_value(1200)->value_name("PX"), "image width")
+    ("height", po::value<int>()->default_value(900)->value_name("PX"), "image height")
+    ("azimuth", po::value<double>()->default_value(30)->value_name("DEG"), "camera angle about the up axis")
+    ("elevation", po::value<double>()->default_value(20)->value_name("DEG"), "camera angle above the horizon")
+    ("up", po::value<std::string>()->default_value("y")->value_name("DIR"), "up axis: x, y, z, -x, -y, -z or a,b,c")
+    ("view-direction", po::value<std::string>()->value_name("a,b,c"),
+     "look along this direction instead of --azimuth and --elevation")
+    ("zoom", po::value<double>()->default_value(1)->value_name("Z"), "enlarge the model")
+    ("orthographic", "orthographic instead of perspective projection")
+    ("flat", "flat shading (one normal per face)")
+    ("title", po::value<std::string>()->value_name("TEXT"), "text in the top-left corner")
+    ("no-legend", "no colour bar");
+  command.group("output").add_options()("output,o", po::value<std::vector<std::string>>()->composing()->value_name("FILE"),
+                                        "the picture: .png or .svg; repeatable");
+  if(!command.parse(args)) return 0; // --help
+#ifndef TVF_HAS_CAIRO
+  throw Tool_error("this tvf was built without Cairo, so it draws no pictures (install libcairo2-dev and rebuild)");
+#else
+  command.require("output");
+  for(const std::string& path : command.get<std::vector<std::string>>("output"))
+    if(extension(path) != "png" && extension(path) != "svg")
+      throw Usage_error("cannot draw into '" + path + "': use .png or .svg");
+  const bool has_field = command.has("field") || command.has("field-ply");
+  const std::string colour = command.has("color") ? command.get<std::string>("color") : (has_field ? "magnitude" : "none");
+  if(colour != "divergence" && colour != "curl" && colour != "magnitude" && colour != "none")
+    throw Usage_error("unknown --color '" + colour + "' (divergence, curl, magnitude or none)");
+  command.at_most_one({"no-overlay", "streamlines"});
+  command.at_most_one({"no-overlay", "fur"});
+  command.at_most_one({"no-overlay", "arrows"});
+  const bool streamlines = command.has("streamlines") ||
+                           (has_field && !command.has("fur") && !command.has("arrows") && !command.has("no-overlay"));
+  if(!has_field && (colour != "none" || command.has("streamlines") || command.has("fur") || command.has("arrows")))
+    throw Usage_error("colours and overlays need a field (--field or --field-ply)");
+
+  TVF::Render_options options;
+  options.width = command.get<int>("width");
+  options.height = command.get<int>("height");
+  if(options.width < 16 || options.height < 16 || options.width > 16384 || options.height > 16384)
+    throw Usage_error("the image size must be between 16 and 16384 pixels");
+  options.camera.azimuth = command.get<double>("azimuth");
+  options.camera.elevation = command.get<double>("elevation");
+  options.camera.up = parse_direction(command.get<std::string>("up"));
+  if(command.has("view-direction")) options.camera.view_direction = parse_direction(command.get<std::string>("view-direction"));
+  options.camera.zoom = command.get<double>("zoom");
+  if(!(options.camera.zoom > 0)) throw Usage_error("'--zoom' must be positive");
+  if(command.has("orthographic")) options.camera.projection = TVF::Projection::orthographic;
+  options.smooth_shading = !command.has("flat");
+  options.legend = !command.has("no-legend");
+  if(command.has("title")) options.title = command.get<std::string>("title");
+  const double clip = command.get<double>("clip");
+  if(!(clip >= 0 && clip < 0.5)) throw Usage_error("'--clip' must lie in [0, 0.5)");
+  const TVF::Length_unit unit = length_unit(command.get<std::string>("unit"));
+  const TVF::Evenly_spaced_options even = evenly_spaced_options(command, unit);
+  const TVF::Fur_options fur = fur_options(command, unit);
+
+  const Tool_mesh mesh(command.positional_value(), command.mollify());
+  Eigen::VectorXd x;
+  if(has_field) x = read_input_field(command, mesh);
+  const auto start = std::chrono::steady_clock::now();
+  TVF::Field_renderer renderer(mesh.shared_intrinsic(), options);
+
+  TVF::Scalar_colouring colouring;
+  colouring.clip_fraction = clip;
+  const bool signed_quantity = colour == "divergence" || colour == "curl";
+  colouring.map = signed_quantity ? TVF::Colour_map::cool_warm : TVF::Colour_map::viridis;
+  if(command.has("colormap"))
+  {
+    const std::string map = command.get<std::string>("colormap");
+    if(map == "viridis") colouring.map = TVF::Colour_map::viridis;
+    else if(map == "cool_warm") colouring.map = TVF::Colour_map::cool_warm;
+    else if(map == "greys") colouring.map = TVF::Colour_map::greys;
+    else throw Usage_error("unknown --colormap '" + map + "' (viridis, cool_warm or greys)");
+  }
+  // A diverging map is centred on zero for signed quantities.
+  colouring.symmetric = signed_quantity && colouring.map == TVF::Colour_map::cool_warm;
+  if(signed_quantity)
+  {
+    colouring.label = colour;
+    renderer.colour_vertices(
+        to_std_vector(colour == "divergence" ? mesh.matrices().divergence(x) : mesh.matrices().curl(x)), colouring);
+  }
+  else if(colour == "magnitude")
+  {
+    colouring.label = "|field|";
+    std::vector<double> m(static_cast<std::size_t>(mesh.number_of_faces()));
+    for(std::size_t f = 0; f < m.size(); ++f) m[f] = std::hypot(x[2 * f], x[2 * f + 1]);
+    renderer.colour_faces(std::move(m), colouring);
+  }
+
+  const bool light_background = colour == "none" || colouring.map != TVF::Colour_map::viridis;
+  const TVF::Colour line_colour = command.has("line-color") ? parse_colour(command.get<std::string>("line-color"))
+                                  : light_background        ? TVF::Colour{0.08, 0.08, 0.08}
+                                                            : TVF::Colour{1, 1, 1};
+  std::size_t lines_drawn = 0;
+  if(streamlines || command.has("fur"))
+  {
+    const TVF::Streamline_tracer tracer(mesh.shared_intrinsic(), x);
+    if(streamlines)
+    {
+      Step step("tracing streamlines");
+      TVF::Line_style style;
+      style.colour = line_colour;
+      style.width = command.has("line-width") ? command.get<double>("line-width") : 1.3;
+      std::vector<TVF::Streamline> lines = tracer.evenly_spaced(even);
+      lines_drawn += lines.size();
+      renderer.add_streamlines(std::move(lines), style);
+    }
+    if(command.has("fur"))
+    {
+      Step step("growing fur");
+      TVF::Line_style style;
+      style.taper = true;
+      style.width = command.has("line-width") ? command.get<double>("line-width") : 1.6;
+      style.opacity = 0.85;
+      style.colour = line_colour;
+      std::vector<TVF::Streamline> strokes = tracer.fur(fur);
+      lines_drawn += strokes.size();
+      renderer.add_streamlines(std::move(strokes), style);
+    }
+  }
+  if(command.has("arrows"))
+  {
+    TVF::Arrow_style style;
+    style.colour = line_colour;
+    style.spacing = command.has("arrow-spacing") ? command.get<double>("arrow-spacing") : options.width / 45.0;
+    if(!(style.spacing >= 4)) throw Usage_error("'--arrow-spacing' must be at least 4 pixels");
+    if(command.has("line-width")) style.width = command.get<double>("line-width");
+    style.scale_by_magnitude = !command.has("constant-arrows");
+    renderer.add_arrows(x, style);
+  }
+  for(const std::string& path : command.get<std::vector<std::string>>("output"))
+  {
+    Step step("drawing");
+    try
+    {
+      if(extension(path) == "png") renderer.write_png(path);
+      else renderer.write_svg(path);
+    }
+    catch(const TVF::Invalid_input& e)
+    {
+      throw Tool_error(about(path, one_line(e.what())));
+    }
+    step.done();
+    say("wrote %s (%d x %d", path.c_str(), options.width, options.height);
+    if(colour != "none") say(", colours: %s", colour.c_str());
+    if(lines_drawn > 0) say(", %zu lines", lines_drawn);
+    say(") in %.2f s\n", seconds_since(start));
+  }
+  return 0;
+#endif
+}
+
+// --- streamlines ---------------------------------------------------------------------------------
+
+int streamlines_command(const Arguments& args)
+{
+  Command_line command("tvf streamlines <mesh> (--field FILE | --field-ply NAME) [--separation S | --fur ...] -o FILE",
+                       "Traces evenly spaced streamlines of a field (exactly, face by face; Jobard and Lefer on the\n"
+                       "surface), or fur strokes from random roots, and writes them as polylines: .obj (v and l\n"
+                       "lines), .ply (vertices with face and streamline, edges) or .vtp (VTK polylines).");
+  command.positional("mesh", "the mesh file");
+  add_field_options(command);
+  command.group("streamlines").add_options()
+    ("fur", "fur strokes instead of evenly spaced streamlines")
+    ("unit", po::value<std::string>()->default_value("diagonal")->value_name("U"),
+     "unit of --separation, --length and --max-length: diagonal (of the bounding box), edge (mean edge length) or "
+     "absolute")
+    ("max-length", po::value<double>()->value_name("L"), "longest streamline in each direction from its seed (in --unit)")
+    ("max-lines", po::value<int>()->value_name("N"), "stop after N streamlines");
+  add_streamline_options(command);
+  command.group("output").add_options()("output,o", po::value<std::vector<std::string>>()->composing()->value_name("FILE"),
+                                        "the polylines: .obj, .ply or .vtp; repeatable");
+  if(!command.parse(args)) return 0; // --help
+  command.require("output");
+  for(const std::string& path : command.get<std::vector<std::string>>("output"))
+  {
+    const std::string ext = extension(path);
+    if(ext != "obj" && ext != "ply" && ext != "vtp")
+      throw Usage_error("cannot write streamlines to '" + path + "': use .obj, .ply or .vtp");
+  }
+  const TVF::Length_unit unit = length_unit(command.get<std::string>("unit"));
+  TVF::Evenly_spaced_options even = evenly_spaced_options(command, unit);
+  const TVF::Fur_options fur = fur_options(command, unit);
+  if(command.has("max-length"))
+  {
+    even.tracing.maximum_length = command.get<double>("max-length");
+    even.tracing.length_unit = unit;
+    if(!(even.tracing.maximum_length > 0)) throw Usage_error("'--max-length' must be positive");
+  }
+  if(command.has("max-lines"))
+  {
+    even.maximum_streamlines = command.get<int>("max-lines");
+    if(even.maximum_streamlines <= 0) throw Usage_error("'--max-lines' must be positive");
+  }
+  const Tool_mesh mesh(command.positional_value(), command.mollify());
+  const Eigen::VectorXd x = read_input_field(command, mesh);
+  const auto start = std::chrono::steady_clock::now();
+  const TVF::Streamline_tracer tracer(mesh.shared_intrinsic(), x);
+  std::vector<TVF::Streamline> lines;
+  {
+    Step step(command.has("fur") ? "growing fur" : "tracing streamlines");
+    lines = command.has("fur") ? tracer.fur(fur) : tracer.evenly_spaced(even);
+  }
+  double length = 0;
+  int closed = 0;
+  std::size_t points = 0;
+  for(const TVF::Streamline& s : lines)
+  {
+    length += s.length();
+    closed += s.closed;
+    points += s.points.size();
+  }
+  say("%zu %s, %zu points, total length %.6g (%.4g bounding box diagonals), %d closed; traced in %.3f s\n",
+      lines.size(), command.has("fur") ? "fur strokes" : "streamlines", points, length,
+      length / mesh.bounding_box_diagonal(), closed, seconds_since(start));
+  if(!command.has("fur")) say("  ends: %s\n", stop_summary(lines).c_str());
+  for(const std::string& path : command.get<std::vector<std::string>>("output"))
+  {
+    const std::string ext = extension(path);
+    std::ofstream out(path);
+    if(!out) throw Tool_error("cannot open '" + path + "' for writing: " + std::strerror(errno));
+    try
+    {
+      if(ext == "obj") TVF::write_streamlines_obj(out, lines);
+      else if(ext == "ply") TVF::write_streamlines_ply(out, lines);
+      else TVF::write_vtk_polydata(out, TVF::streamlines_polydata(lines));
+    }
+    catch(const TVF::Invalid_input& e)
+    {
+      throw Tool_error(about(path, one_line(e.what())));
+    }
+    say("wrote %s\n", path.c_str());
+  }
+  return 0;
+}
+
+// --- export ----------------------------------------------------------------------------------------
+
+int export_command(const Arguments& args)
+{
+  Command_line command("tvf export <mesh> (--field FILE | --field-ply NAME) -o FILE",
+                       "Converts a field between the formats the tool reads and writes: .tvf (text), .ply (the mesh\n"
+                       "with face properties), .vtp (ParaView), .rawfield (Directional).  Reading a .rawfield and\n"
+                       "writing a .tvf imports a Directional field.");
+  command.positional("mesh", "the mesh file");
+  add_field_options(command);
+  add_output_options(command, "the field", "field");
+  if(!command.parse(args)) return 0; // --help
+  command.require("output");
+  const Tool_mesh mesh(command.positional_value(), command.mollify());
+  const Eigen::VectorXd x = read_input_field(command, mesh);
+  say("field: %d faces, |field| = %.6g (L2)\n", mesh.number_of_faces(), field_norm(mesh.matrices(), x));
+  write_outputs(command, mesh, x);
+  return 0;
+}
+
+} // namespace tvf_tool

@@ -1,0 +1,319 @@
+// Copyright (c) 2026 The Tangent_vector_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The one translation unit of the tool that includes Surface_mesh: reading the mesh
+// (every format CGAL::IO::read_polygon_mesh reads; PLY with its face properties), and
+// the field files that need the mesh type (.tvf, .rawfield, .vtp, PLY properties).
+
+#include "tool.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#include <CGAL/Tangent_vector_fields/Discrete_operators.h>
+#include <CGAL/Tangent_vector_fields/face_field_io.h>
+#include <CGAL/Tangent_vector_fields/field_export.h>
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <set>
+
+namespace tvf_tool {
+
+namespace {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+typedef Mesh::Face_index Face_index;
+typedef Mesh::Property_map<Face_index, K::Vector_3> Field_map;
+
+void check_readable(const std::string& path, const std::string& what)
+{
+  std::ifstream in(path);
+  if(!in) throw Tool_error("cannot open " + what + " '" + path + "': " + std::strerror(errno));
+}
+
+// Reads a mesh; PLY files through the Surface_mesh reader, which keeps the face properties.
+void read_mesh(const std::string& path, Mesh& mesh)
+{
+  check_readable(path, "mesh file");
+  const std::string ext = extension(path);
+  static const std::set<std::string> formats = {"off", "obj", "ply", "stl", "ts"};
+  if(!formats.count(ext))
+    throw Tool_error("'" + path + "': unknown mesh format" + (ext.empty() ? std::string() : " '." + ext + "'") +
+                     " (the tool reads .off, .obj, .ply, .stl and .ts)");
+  bool ok = false;
+  try
+  {
+    if(ext == "ply")
+    {
+      std::ifstream in(path, std::ios::binary);
+      std::string comments;
+      ok = CGAL::IO::read_PLY(in, mesh, comments, false);
+    }
+    else
+    {
+      // Surface_mesh's readers want a file-name extension in lower case.
+      ok = CGAL::IO::read_polygon_mesh(path, mesh, CGAL::parameters::verbose(false));
+      if(!ok && path.substr(path.size() - ext.size()) != ext)
+      {
+        mesh.clear();
+        if(ext == "off") ok = CGAL::IO::read_OFF(path, mesh, CGAL::parameters::verbose(false));
+        else if(ext == "obj") ok = CGAL::IO::read_OBJ(path, mesh, CGAL::parameters::verbose(false));
+        else if(ext == "stl") ok = CGAL::IO::read_STL(path, mesh, CGAL::parameters::verbose(false));
+        else if(ext == "ts") ok = CGAL::IO::read_GOCAD(path, mesh, CGAL::parameters::verbose(false));
+      }
+    }
+  }
+  catch(const std::exception& e)
+  {
+    throw Tool_error("cannot read a mesh from '" + path + "': " + one_line(e.what()));
+  }
+  if(!ok)
+    throw Tool_error("cannot read a polygon mesh from '" + path +
+                     "' (malformed file, or its faces do not form a manifold polygon mesh)");
+  if(mesh.number_of_faces() == 0) throw Tool_error("'" + path + "' has no faces");
+  if(mesh.has_garbage()) mesh.collect_garbage();
+}
+
+// The face field properties (NAME_x, NAME_y, NAME_z of type double) of a mesh.
+std::vector<std::string> face_field_names(const Mesh& mesh)
+{
+  std::vector<std::string> names;
+  for(const std::string& p : mesh.properties<Face_index>())
+  {
+    if(p.size() < 5 || p.compare(0, 2, "f:") != 0 || p.compare(p.size() - 2, 2, "_x") != 0) continue;
+    const std::string name = p.substr(2, p.size() - 4);
+    if(mesh.property_map<Face_index, double>("f:" + name + "_x").second &&
+       mesh.property_map<Face_index, double>("f:" + name + "_y").second &&
+       mesh.property_map<Face_index, double>("f:" + name + "_z").second)
+      names.push_back(name);
+  }
+  return names;
+}
+
+std::string list_or_none(const std::vector<std::string>& names)
+{
+  if(names.empty()) return "none";
+  std::string s;
+  for(const std::string& n : names) s += (s.empty() ? "" : ", ") + n;
+  return s;
+}
+
+// A temporary face map of vectors on a mesh, removed when it goes out of scope.
+class Temporary_field
+{
+public:
+  explicit Temporary_field(Mesh& mesh) : mesh_(mesh)
+  {
+    static int counter = 0;
+    map_ = mesh.add_property_map<Face_index, K::Vector_3>("f:tvf_tool_field_" + std::to_string(counter++),
+                                                          CGAL::NULL_VECTOR).first;
+  }
+  ~Temporary_field() { mesh_.remove_property_map(map_); }
+  Field_map& map() { return map_; }
+
+private:
+  Mesh& mesh_;
+  Field_map map_;
+};
+
+} // namespace
+
+struct Tool_mesh::Impl
+{
+  std::string path;
+  Mesh mesh;
+  std::unique_ptr<TVF::Discrete_operators<Mesh>> operators;
+};
+
+Tool_mesh::Tool_mesh(const std::string& path, bool mollify) : impl_(std::make_unique<Impl>())
+{
+  impl_->path = path;
+  read_mesh(path, impl_->mesh);
+  try
+  {
+    impl_->operators = std::make_unique<TVF::Discrete_operators<Mesh>>(
+        impl_->mesh, TVF::parameters::use_intrinsic_mollification(mollify));
+  }
+  catch(const TVF::Invalid_mesh& e)
+  {
+    // The library's message names its C++ parameter; the tool has an option for it.
+    std::string reason = one_line(e.what());
+    const std::string parameter = "use the named parameter use_intrinsic_mollification(true)";
+    const std::size_t at = reason.find(parameter);
+    if(at != std::string::npos) reason.replace(at, parameter.size(), mollify ? "mollification did not help" : "use --mollify");
+    else if(e.defect() == TVF::Mesh_defect::degenerate_face && !mollify) reason += " (try --mollify)";
+    if(e.defect() == TVF::Mesh_defect::non_triangle_face) reason += " (the tool needs a triangle mesh)";
+    throw Tool_error("'" + path + "': " + reason);
+  }
+  matrices_ = impl_->operators->shared_matrices();
+}
+
+Tool_mesh::~Tool_mesh() = default;
+
+const std::string& Tool_mesh::path() const { return impl_->path; }
+
+double Tool_mesh::bounding_box_diagonal() const
+{
+  const TVF::Intrinsic_mesh& m = intrinsic();
+  std::array<double, 3> lo{{HUGE_VAL, HUGE_VAL, HUGE_VAL}}, hi{{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL}};
+  for(int v = 0; v < m.number_of_vertices(); ++v)
+  {
+    if(m.is_isolated_vertex(v)) continue;
+    for(int k = 0; k < 3; ++k)
+    {
+      lo[k] = std::min(lo[k], m.position(v)[k]);
+      hi[k] = std::max(hi[k], m.position(v)[k]);
+    }
+  }
+  return std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                   (hi[2] - lo[2]) * (hi[2] - lo[2]));
+}
+
+int Tool_mesh::number_of_file_vertices() const { return static_cast<int>(impl_->mesh.number_of_vertices()); }
+
+std::vector<std::string> Tool_mesh::face_fields_in_file() const { return face_field_names(impl_->mesh); }
+
+Eigen::VectorXd Tool_mesh::read_field(const Field_source& source) const
+{
+  Mesh& mesh = impl_->mesh;
+  Temporary_field field(mesh);
+  Field_map& map = field.map();
+  const std::string where = source.describe();
+  try
+  {
+    if(source.from_mesh_file)
+    {
+      if(extension(impl_->path) != "ply")
+        throw Tool_error("'--field-ply " + source.name + "' reads face properties of a PLY mesh, but '" + impl_->path +
+                         "' is not a .ply file");
+      if(!TVF::face_field_from_properties(mesh, source.name, map))
+        throw Tool_error("'" + impl_->path + "' has no face properties " + source.name + "_x, " + source.name +
+                         "_y, " + source.name + "_z (face fields in it: " + list_or_none(face_field_names(mesh)) + ")");
+    }
+    else
+    {
+      const std::string& file = source.file;
+      check_readable(file, "field file");
+      const std::string ext = extension(file);
+      if(ext == "tvf")
+        TVF::read_face_field(file, mesh, map);
+      else if(ext == "rawfield")
+        TVF::read_raw_field(file, mesh, map, source.direction);
+      else if(ext == "vtp")
+      {
+        std::string name = source.name;
+        if(name.empty())
+        {
+          std::ifstream in(file);
+          const TVF::Vtk_polydata data = TVF::read_vtk_polydata(in);
+          for(const auto& a : data.cell_data)
+            if(a.components == 3)
+            {
+              name = a.name;
+              break;
+            }
+          if(name.empty()) throw Tool_error(where + " has no 3-component cell array");
+        }
+        TVF::read_vtp(file, mesh, name, map);
+      }
+      else if(ext == "ply")
+      {
+        Mesh other;
+        read_mesh(file, other);
+        if(other.number_of_faces() != mesh.number_of_faces() || other.number_of_vertices() != mesh.number_of_vertices())
+          throw Tool_error(where + " has " + std::to_string(other.number_of_vertices()) + " vertices and " +
+                           std::to_string(other.number_of_faces()) + " faces, the mesh " +
+                           std::to_string(mesh.number_of_vertices()) + " and " + std::to_string(mesh.number_of_faces()));
+        std::string name = source.name;
+        const std::vector<std::string> names = face_field_names(other);
+        if(name.empty())
+        {
+          if(names.size() != 1)
+            throw Tool_error(where + " holds " + std::to_string(names.size()) + " face fields (" + list_or_none(names) +
+                             "): choose one with --field-name");
+          name = names.front();
+        }
+        Temporary_field other_field(other);
+        if(!TVF::face_field_from_properties(other, name, other_field.map()))
+          throw Tool_error(where + " has no face properties " + name + "_x, " + name + "_y, " + name +
+                           "_z (face fields in it: " + list_or_none(names) + ")");
+        for(Face_index f : mesh.faces()) map[f] = other_field.map()[Face_index(static_cast<Mesh::size_type>(f))];
+      }
+      else
+        throw Tool_error("'" + file + "': unknown field format" + (ext.empty() ? std::string() : " '." + ext + "'") +
+                         " (the tool reads .tvf, .rawfield, .vtp and .ply)");
+    }
+  }
+  catch(const TVF::Invalid_input& e)
+  {
+    const std::string reason = one_line(e.what());
+    throw Tool_error(source.from_mesh_file ? where + ": " + reason : about(source.file, reason));
+  }
+  // What the projection onto the faces removes, and a check for NaNs.
+  const TVF::Intrinsic_mesh& m = intrinsic();
+  double largest = 0, largest_normal = 0;
+  for(Face_index f : mesh.faces())
+  {
+    const K::Vector_3& w = map[f];
+    if(!std::isfinite(w.x()) || !std::isfinite(w.y()) || !std::isfinite(w.z()))
+      throw Tool_error(where + ": the vector of face " + std::to_string(static_cast<int>(f)) + " is not finite");
+    const auto& n = m.normal(static_cast<int>(f));
+    largest = std::max(largest, std::sqrt(w.squared_length()));
+    largest_normal = std::max(largest_normal, std::abs(w.x() * n[0] + w.y() * n[1] + w.z() * n[2]));
+  }
+  last_normal_fraction_ = largest > 0 ? largest_normal / largest : 0;
+  return impl_->operators->to_frame_coordinates(map);
+}
+
+void Tool_mesh::write_fields(const std::string& path, const std::vector<Named_field>& fields) const
+{
+  Mesh& mesh = impl_->mesh;
+  const std::string ext = extension(path);
+  if(ext != "tvf" && ext != "rawfield" && ext != "vtp" && ext != "ply")
+    throw Usage_error("cannot write a field to '" + path + "': use .tvf, .ply, .vtp or .rawfield");
+  if((ext == "tvf" || ext == "rawfield") && fields.size() != 1)
+    throw Usage_error("'" + path + "': a ." + ext + " file holds one field; use .vtp or .ply for several");
+  try
+  {
+    Mesh copy;
+    if(ext == "ply") copy = mesh; // before the temporary maps are added
+    std::vector<std::unique_ptr<Temporary_field>> maps;
+    for(const Named_field& f : fields)
+    {
+      if(f.x.size() != 2 * static_cast<Eigen::Index>(mesh.number_of_faces()))
+        throw Tool_error("field '" + f.name + "' has " + std::to_string(f.x.size() / 2) + " vectors, the mesh " +
+                         std::to_string(mesh.number_of_faces()) + " faces");
+      maps.push_back(std::make_unique<Temporary_field>(mesh));
+      impl_->operators->from_frame_coordinates(f.x, maps.back()->map());
+    }
+    if(ext == "tvf")
+      TVF::write_face_field(path, mesh, maps.front()->map());
+    else if(ext == "rawfield")
+      TVF::write_raw_field(path, mesh, maps.front()->map());
+    else if(ext == "vtp")
+    {
+      std::vector<std::pair<std::string, Field_map>> named;
+      for(std::size_t i = 0; i < fields.size(); ++i) named.emplace_back(fields[i].name, maps[i]->map());
+      TVF::write_vtp(path, mesh, named);
+    }
+    else
+    {
+      for(std::size_t i = 0; i < fields.size(); ++i) TVF::add_face_field_properties(copy, fields[i].name, maps[i]->map());
+      std::ofstream out(path, std::ios::binary);
+      if(!out) throw Tool_error("cannot open '" + path + "' for writing: " + std::strerror(errno));
+      CGAL::IO::set_mode(out, CGAL::IO::BINARY); // exact doubles (ASCII would round them to the stream precision)
+      if(!CGAL::IO::write_PLY(out, copy) || !out)
+        throw Tool_error("writing '" + path + "' failed");
+    }
+  }
+  catch(const TVF::Invalid_input& e)
+  {
+    throw Tool_error(about(path, one_line(e.what())));
+  }
+}
+
+} // namespace tvf_tool

@@ -1,0 +1,57 @@
+# Runs the command-line tool once and checks how it ended (cmake -P run_tvf.cmake).
+#
+#   -DTVF=<path of tvf>
+#   -DARGS=<arguments, separated by |>
+#   -DEXPECT=success | failure | usage
+#   -DOUTPUTS=<files, separated by |>   success: each must have been written (they are removed first)
+#   -DSTDOUT=<regular expression>       success: the standard output must match it
+#
+# success: exit code 0 and nothing on stderr (progress bars are drawn on terminals only).
+# failure / usage: exit code 1 / 2, and stderr is exactly one line "tvf: error: <reason>" --
+# never a crash, an abort or a stack trace.
+
+string(REPLACE "|" ";" arguments "${ARGS}")
+string(REPLACE "|" ";" outputs "${OUTPUTS}")
+foreach(file IN LISTS outputs)
+  file(REMOVE "${file}")
+endforeach()
+
+execute_process(COMMAND "${TVF}" ${arguments}
+                RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+string(REPLACE ";" "|" shown "${arguments}")
+set(what "tvf ${shown}")
+
+if(EXPECT STREQUAL "success")
+  if(NOT code STREQUAL "0")
+    message(FATAL_ERROR "${what}\nexpected success, got exit code '${code}'\nstdout:\n${out}\nstderr:\n${err}")
+  endif()
+  if(NOT err STREQUAL "")
+    message(FATAL_ERROR "${what}\nexpected an empty stderr, got:\n${err}")
+  endif()
+  foreach(file IN LISTS outputs)
+    if(NOT EXISTS "${file}")
+      message(FATAL_ERROR "${what}\ndid not write ${file}\nstdout:\n${out}")
+    endif()
+    file(SIZE "${file}" size)
+    if(size EQUAL 0)
+      message(FATAL_ERROR "${what}\nwrote an empty ${file}")
+    endif()
+  endforeach()
+  if(DEFINED STDOUT AND NOT STDOUT STREQUAL "" AND NOT out MATCHES "${STDOUT}")
+    message(FATAL_ERROR "${what}\nstdout does not match '${STDOUT}':\n${out}")
+  endif()
+  message(STATUS "${what}\n${out}")
+else()
+  if(EXPECT STREQUAL "usage")
+    set(expected_code 2)
+  else()
+    set(expected_code 1)
+  endif()
+  if(NOT code STREQUAL "${expected_code}")
+    message(FATAL_ERROR "${what}\nexpected exit code ${expected_code} (${EXPECT}), got '${code}'\nstderr:\n${err}")
+  endif()
+  if(NOT err MATCHES "^tvf: error: [^\n]+\n$")
+    message(FATAL_ERROR "${what}\nexpected one line 'tvf: error: ...' on stderr, got:\n${err}")
+  endif()
+  message(STATUS "${what}\n${err}")
+endif()
