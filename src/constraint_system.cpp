@@ -22,8 +22,8 @@ namespace {
 constexpr double undetermined_harmonic_threshold = 1e-10;
 } // namespace
 
-Constraint_system::Constraint_system(int harmonic_dimension, double harmonic_scale)
-  : nh_(harmonic_dimension), harmonic_scale_(harmonic_scale),
+Constraint_system::Constraint_system(int harmonic_dimension, double harmonic_scale, double harmonic_penalty)
+  : nh_(harmonic_dimension), harmonic_scale_(harmonic_scale), harmonic_penalty_(harmonic_penalty),
     determination_(std::numeric_limits<double>::infinity())
 {
   undetermined_ = nh_;
@@ -147,7 +147,8 @@ void Constraint_system::update_harmonic()
       continue;
     }
     determination_ = std::min(determination_, ratio);
-    V_pinv_ += svd.matrixV().col(j) * (svd.matrixU().col(j).transpose() / s[j]);
+    // Free harmonic part: pseudo-inverse; with an energy kappa |z|^2: ridge, s / (s^2 + kappa).
+    V_pinv_ += svd.matrixV().col(j) * (svd.matrixU().col(j).transpose() * (s[j] / (s[j] * s[j] + harmonic_penalty_)));
   }
 }
 

@@ -161,7 +161,10 @@ void Full_spline_solver::pull_back(std::vector<Row>& rows) const
 double Full_spline_solver::energy(const Eigen::VectorXd& x) const
 {
   if(x.squaredNorm() == 0) return 0;
-  return x.dot(apply_energy(x).col(0));
+  double harmonic = 0;
+  if(harmonic_penalty_ > 0 && harmonic_dimension() > 0)
+    harmonic = (hodge_->harmonic_basis().transpose() * operators_->field_masses().cwiseProduct(x)).squaredNorm();
+  return x.dot(apply_energy(x).col(0)) + harmonic_penalty_ * harmonic;
 }
 
 void Full_spline_solver::add_harmonic(const Eigen::VectorXd& z, Eigen::VectorXd& x) const

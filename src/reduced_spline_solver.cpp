@@ -58,7 +58,9 @@ double Reduced_spline_solver::apply(const Row& row, const Eigen::VectorXd& y) co
 
 double Reduced_spline_solver::energy(const Eigen::VectorXd& a) const
 {
-  return a.cwiseProduct(a).dot(energy_);
+  double harmonic = 0;
+  for(int k : rows_in_basis_.harmonic_positions()) harmonic += a[k] * a[k];
+  return a.cwiseProduct(a).dot(energy_) + harmonic_penalty_ * harmonic;
 }
 
 void Reduced_spline_solver::add_harmonic(const Eigen::VectorXd& z, Eigen::VectorXd& a) const

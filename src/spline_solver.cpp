@@ -17,8 +17,10 @@ Spline_solver::Spline_solver(std::shared_ptr<const Operator_matrices> operators,
 {
   if(!std::isfinite(options.omega) || options.omega < 0)
     throw Invalid_input("the tension omega must be finite and non-negative");
+  if(!std::isfinite(options.harmonic_eigenvalue) || options.harmonic_eigenvalue < 0)
+    throw Invalid_input("the harmonic eigenvalue must be finite and non-negative");
   set_scales();
-  system_ = std::make_unique<internal::Constraint_system>(harmonic_dimension_, harmonic_scale_);
+  system_ = std::make_unique<internal::Constraint_system>(harmonic_dimension_, harmonic_scale_, harmonic_penalty_);
 }
 
 Spline_solver::~Spline_solver() = default;
@@ -31,6 +33,8 @@ void Spline_solver::set_scales()
   omega_ = options_.omega / area;
   const double lambda = 1 / area;
   harmonic_scale_ = lambda * lambda + omega_ * lambda;
+  const double lambda_h = options_.harmonic_eigenvalue / area;
+  harmonic_penalty_ = lambda_h * lambda_h + omega_ * lambda_h;
 }
 
 Constraint_id Spline_solver::add(const Field_constraint& constraint)
@@ -173,7 +177,7 @@ void Spline_solver::clear()
 {
   entries_.clear();
   rows_.clear();
-  system_ = std::make_unique<internal::Constraint_system>(harmonic_dimension_, harmonic_scale_);
+  system_ = std::make_unique<internal::Constraint_system>(harmonic_dimension_, harmonic_scale_, harmonic_penalty_);
   solved_ = false;
 }
 
@@ -189,7 +193,7 @@ void Spline_solver::set_omega(double omega)
             [](const auto& a, const auto& b) { return a.second.first_row < b.second.first_row; });
   entries_.clear();
   rows_.clear();
-  system_ = std::make_unique<internal::Constraint_system>(harmonic_dimension_, harmonic_scale_);
+  system_ = std::make_unique<internal::Constraint_system>(harmonic_dimension_, harmonic_scale_, harmonic_penalty_);
   std::vector<Field_constraint> constraints;
   std::vector<Constraint_id> ids;
   for(const auto& e : entries)

@@ -32,6 +32,14 @@ struct Spline_options
   /// Tension `omega` of `E_B + omega E_D`, for the mesh scaled to unit total area
   /// (so that the result does not depend on the mesh's scale).  0: pure biharmonic.
   double omega = 0;
+  /// Eigenvalue given to the harmonic fields, for the mesh scaled to unit area.  0 (the
+  /// default): harmonic fields carry no energy and the constraints alone determine them
+  /// (the exact minimiser).  On surfaces with handles or holes far from every
+  /// constraint that can make the harmonic part huge (a warning says "weakly
+  /// determined"); a positive value (the thesis: a tenth of the lowest non-zero
+  /// eigenvalue, about 2.5 on a unit-area sphere) gives them the energy
+  /// `lambda_h^2 + omega lambda_h` per unit coefficient, in the reduced and the full solver alike.
+  double harmonic_eigenvalue = 0;
   /// A new constraint row whose `sin^2` angle to the span of the others (in the
   /// metric of the energy) is below this is refused as dependent.  Double precision
   /// leaves about 1e-16 for exact repeats; 1e-10 also catches rows a basis cannot tell apart.
@@ -143,6 +151,7 @@ protected:
   Spline_options options_;
   double omega_ = 0;          // effective omega for the mesh as given
   double harmonic_scale_ = 0; // energy of a unit field of frequency 1/area
+  double harmonic_penalty_ = 0; // energy per unit harmonic coefficient (from options.harmonic_eigenvalue)
 
 private:
   struct Entry

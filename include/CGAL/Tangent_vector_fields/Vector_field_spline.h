@@ -30,6 +30,8 @@ namespace Tangent_vector_fields {
 ///
 /// Named parameters of both constructors:
 /// - `spline_tension` (double, default 0): `omega`, for the mesh scaled to unit area;
+/// - `harmonic_eigenvalue` (double, default 0): energy of harmonic fields (see
+///   `Spline_options::harmonic_eigenvalue`);
 /// - `vertex_index_map`, `edge_index_map`, `face_index_map`: the same maps as used
 ///   for the basis or operators (default: the mesh's internal ones).
 /// With a basis also `number_of_eigenfields` (int, default: all): use only the first
@@ -158,6 +160,7 @@ private:
     using parameters::get_parameter;
     Spline_options o;
     o.omega = choose_parameter(get_parameter(np, internal_np::spline_tension), 0.);
+    o.harmonic_eigenvalue = choose_parameter(get_parameter(np, internal_np::harmonic_eigenvalue), 0.);
     return o;
   }
   template <class NamedParameters>

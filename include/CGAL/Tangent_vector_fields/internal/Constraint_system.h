@@ -19,6 +19,8 @@
 /// refactored from scratch.  Eliminating `mu` leaves the least-squares problem
 /// `min |R^-T c - V z|` with `V = R^-T C_h`: harmonic directions that no constraint
 /// sees (tiny singular values of `V`) get coefficient 0, the minimum-norm answer.
+/// With a harmonic energy `kappa |z|^2` the elimination gives the ridge problem
+/// `min |R^-T c - V z|^2 + kappa |z|^2` instead.
 
 #include <Eigen/Core>
 
@@ -31,7 +33,8 @@ class Constraint_system
 public:
   /// `harmonic_scale`: energy scale (`mu` of a unit field of the mesh's lowest
   /// frequencies) against which `V`'s singular values are judged.
-  Constraint_system(int harmonic_dimension, double harmonic_scale);
+  /// `harmonic_penalty`: energy `kappa |z|^2` of the harmonic coefficients (0: free).
+  Constraint_system(int harmonic_dimension, double harmonic_scale, double harmonic_penalty = 0);
 
   int size() const { return n_; }
   int harmonic_dimension() const { return nh_; }
@@ -64,6 +67,7 @@ private:
 
   int n_ = 0, nh_ = 0;
   double harmonic_scale_;
+  double harmonic_penalty_;
   Eigen::MatrixXd R_;  // upper triangular, capacity >= n_
   Eigen::MatrixXd Ch_; // n_ x nh_ (capacity rows)
   // Pseudo-inverse of V on its determined directions: z = W S^-1 P^T g.

@@ -30,3 +30,4 @@ TVF_add_named_parameter(progress_callback_t, progress_callback, progress_callbac
 
 // Field design
 TVF_add_named_parameter(spline_tension_t, spline_tension, spline_tension)
+TVF_add_named_parameter(harmonic_eigenvalue_t, harmonic_eigenvalue, harmonic_eigenvalue)
