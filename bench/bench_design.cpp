@@ -14,6 +14,7 @@
 //
 // Usage: bench_design [data-dir] [--meshes rocker,bunny,armadillo] [--sizes 50,100,...]
 //                     [--cache DIR] (saves / loads bases there)
+//                     [--chart FILE.svg] (error against time per edit, one curve per mesh and constraint set)
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -25,6 +26,7 @@
 #include <CGAL/Tangent_vector_fields/Reduced_spline_solver.h>
 #include <CGAL/Tangent_vector_fields/Soft_field_design.h>
 #include <CGAL/Tangent_vector_fields/internal/Mesh_adapter.h>
+#include <CGAL/Tangent_vector_fields/svg_chart.h>
 
 #include <algorithm>
 #include <chrono>
@@ -150,13 +152,18 @@ std::vector<int> parse_list(const std::string& s)
 
 int main(int argc, char** argv)
 {
-  std::string dir = TVF_SHARED_DATA_DIR, which = "rocker,bunny,armadillo", cache;
+  std::string dir = TVF_SHARED_DATA_DIR, which = "rocker,bunny,armadillo", cache, chart_file;
+  TVF::Line_chart chart;
+  chart.title = "Reduced TVFS: error against the full spline vs. time of a constraint add (d = 100 ... 2000)";
+  chart.x_label = "constraint add + solve [s]";
+  chart.y_label = "relative L2(MX) error vs full";
   std::vector<int> sizes = {50, 100, 200, 500, 1000, 2000};
   for(int i = 1; i < argc; ++i)
   {
     if(!std::strcmp(argv[i], "--meshes") && i + 1 < argc) which = argv[++i];
     else if(!std::strcmp(argv[i], "--sizes") && i + 1 < argc) sizes = parse_list(argv[++i]);
     else if(!std::strcmp(argv[i], "--cache") && i + 1 < argc) cache = argv[++i];
+    else if(!std::strcmp(argv[i], "--chart") && i + 1 < argc) chart_file = argv[++i];
     else dir = argv[i];
   }
   const int largest = *std::max_element(sizes.begin(), sizes.end());
@@ -240,6 +247,7 @@ int main(int argc, char** argv)
                 "reconstr", "GB/s", "soft fac", "soft sol", "rel L2", "med deg", "c. resid", "E ratio", "speed-up",
                 "full/red");
     std::vector<std::string> smooth_rows;
+    TVF::Chart_series random_series{s.key + ", random set", {}, {}}, smooth_series{s.key + ", smooth set", {}, {}};
     for(int d : sizes)
     {
       if(d > basis->size()) continue;
@@ -308,6 +316,8 @@ int main(int argc, char** argv)
       const double error = relative_mx_error(masses, field, full_field);
       const double angle = median_angle_degrees(field, full_field);
       const double ratio = reduced.report().energy / full.report().energy;
+      random_series.x.push_back(add);
+      random_series.y.push_back(error);
       std::printf("%6d | %9.3f %9.4f %9.3f %9.2f %8.2f | %9.2f %9.4f | %9.2e %8.3f %9.1e %9.4f %9.0f | %9.0f\n", d,
                   1e3 * setup, 1e3 * edit, 1e3 * add, 1e3 * reconstruction, bytes / reconstruction / 1e9,
                   1e3 * soft_factor, 1e3 * soft_solve, error, angle, reduced.report().constraint_residual, ratio,
@@ -319,6 +329,8 @@ int main(int argc, char** argv)
       {
         reduced_smooth.add(smooth);
         const Eigen::VectorXd x = reduced_smooth.field();
+        smooth_series.x.push_back(add); // the add time measured on the random set at this d
+        smooth_series.y.push_back(relative_mx_error(masses, x, full_smooth_field));
         char line[256];
         std::snprintf(line, sizeof line, "%6d | %9.2e %8.3f %9.1e %9.4f\n", d, relative_mx_error(masses, x, full_smooth_field),
                       median_angle_degrees(x, full_smooth_field), reduced_smooth.report().constraint_residual,
@@ -333,8 +345,15 @@ int main(int argc, char** argv)
     std::printf("\nsmooth constraint set (30 vectors from a smooth ambient field), reduced TVFS against full:\n"
                 "%6s | %9s %8s %9s %9s\n", "d", "rel L2", "med deg", "c. resid", "E ratio");
     for(const std::string& line : smooth_rows) std::printf("%s", line.c_str());
+    chart.series.push_back(random_series);
+    chart.series.push_back(smooth_series);
     std::printf("speed-up = full TVFS constraint add (1 pull-back with the factor kept) / reduced constraint add;\n"
                 "full/red = full TVFS from scratch (factor + 54 pull-backs) / reduced set-up.\n\n");
+  }
+  if(!chart_file.empty() && !chart.series.empty())
+  {
+    TVF::write_svg_line_chart(chart_file, chart);
+    std::printf("chart written to %s\n", chart_file.c_str());
   }
   return 0;
 }
