@@ -11,14 +11,10 @@
 // Usage: bench_spectral [data-dir] [--meshes rocker,bunny,armadillo] [--exact N] [--coexact N]
 //                       [--no-sweep] [--no-compression] [--compression-size D]
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Surface_mesh.h>
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
-#include <CGAL/Polygon_mesh_processing/repair.h>
-#include <CGAL/subdivision_method_3.h>
+#include "bench_meshes.h"
+
 
 #include <CGAL/Tangent_vector_fields/Eigenfield_basis.h>
-#include <CGAL/Tangent_vector_fields/internal/Mesh_adapter.h>
 
 #include <chrono>
 #include <cmath>
@@ -29,8 +25,6 @@
 #include <random>
 #include <sstream>
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 namespace TVF = CGAL::Tangent_vector_fields;
 
 namespace {
@@ -49,17 +43,7 @@ struct Source
 
 std::shared_ptr<TVF::Hodge_solver> load(const std::string& dir, const Source& s, int& faces)
 {
-  Mesh mesh;
-  if(!CGAL::IO::read_polygon_mesh(dir + "/" + s.file, mesh))
-  {
-    std::cerr << "cannot read " << dir << "/" << s.file << "\n";
-    return nullptr;
-  }
-  for(int i = 0; i < s.subdivisions; ++i) CGAL::Subdivision_method_3::Loop_subdivision(mesh);
-  faces = static_cast<int>(mesh.number_of_faces());
-  TVF::internal::Mesh_adapter<Mesh> adapter(mesh, CGAL::parameters::default_values());
-  auto ops = std::make_shared<TVF::Operator_matrices>(adapter.intrinsic_mesh());
-  return std::make_shared<TVF::Hodge_solver>(ops);
+  return tvf_bench::load_mesh(dir, s.file, s.subdivisions, faces);
 }
 
 std::string completeness(const TVF::Basis_report& r)

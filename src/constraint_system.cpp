@@ -15,13 +15,6 @@ namespace CGAL {
 namespace Tangent_vector_fields {
 namespace internal {
 
-namespace {
-// A harmonic direction whose squared singular value in V is below this times the
-// energy scale is one no constraint sees: its coefficient would be roundoff divided
-// by roundoff.  Seen by a constraint, sigma^2 is of the order of the scale or larger.
-constexpr double undetermined_harmonic_threshold = 1e-10;
-} // namespace
-
 Constraint_system::Constraint_system(int harmonic_dimension, double harmonic_scale, double harmonic_penalty)
   : nh_(harmonic_dimension), harmonic_scale_(harmonic_scale), harmonic_penalty_(harmonic_penalty),
     determination_(std::numeric_limits<double>::infinity())

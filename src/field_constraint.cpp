@@ -82,7 +82,46 @@ Constraint_row curl_row(const Operator_matrices& ops, int e)
   return row;
 }
 
+// Frame coordinates of the constraint's vector projected onto its face.
+std::array<double, 2> projected_vector(const Intrinsic_mesh& mesh, const Field_constraint& c)
+{
+  check_index(c.face, mesh.number_of_faces(), "face", c);
+  const std::array<double, 2> a = mesh.to_frame(c.face, c.vector);
+  const double length = std::sqrt(c.vector[0] * c.vector[0] + c.vector[1] * c.vector[1] + c.vector[2] * c.vector[2]);
+  // A vector nearly normal to its face has a meaningless direction after projection.
+  if(length > 0 && std::hypot(a[0], a[1]) <= 1e-8 * length)
+    throw Invalid_input("the vector is normal to its face (nothing is left after projecting it onto the face): " +
+                        c.describe());
+  return a;
+}
+
 } // namespace
+
+bool Field_constraint::same_rows_as(const Field_constraint& other) const
+{
+  if(kind != other.kind || face != other.face || vertex != other.vertex || edge != other.edge) return false;
+  switch(kind)
+  {
+  case Constraint_kind::vector: return true;
+  case Constraint_kind::direction: return false; // the direction is the row itself
+  default: return vertex >= 0 || edge >= 0 || barycentric == other.barycentric;
+  }
+}
+
+std::vector<double> constraint_values(const Intrinsic_mesh& mesh, const Field_constraint& c)
+{
+  check_finite(c);
+  switch(c.kind)
+  {
+  case Constraint_kind::vector:
+  {
+    const std::array<double, 2> a = projected_vector(mesh, c);
+    return {a[0], a[1]};
+  }
+  case Constraint_kind::direction: return {0.0};
+  default: return {c.value};
+  }
+}
 
 Field_constraint Field_constraint::boundary_alignment(const Intrinsic_mesh& mesh, int edge)
 {
@@ -168,14 +207,7 @@ std::vector<Constraint_row> constraint_rows(const Operator_matrices& ops, const 
   case Constraint_kind::vector:
   case Constraint_kind::direction:
   {
-    check_index(c.face, mesh.number_of_faces(), "face", c);
-    const std::array<double, 2> a = mesh.to_frame(c.face, c.vector);
-    const double length = std::sqrt(c.vector[0] * c.vector[0] + c.vector[1] * c.vector[1] + c.vector[2] * c.vector[2]);
-    const double projected = std::hypot(a[0], a[1]);
-    // A vector nearly normal to its face has a meaningless direction after projection.
-    if(length > 0 && projected <= 1e-8 * length)
-      throw Invalid_input("the vector is normal to its face (nothing is left after projecting it onto the face): " +
-                          c.describe());
+    const std::array<double, 2> a = projected_vector(mesh, c);
     if(c.kind == Constraint_kind::vector)
     {
       for(int k = 0; k < 2; ++k)
@@ -188,7 +220,8 @@ std::vector<Constraint_row> constraint_rows(const Operator_matrices& ops, const 
     }
     else
     {
-      if(length == 0) throw Invalid_input("a direction constraint needs a non-zero direction: " + c.describe());
+      const double projected = std::hypot(a[0], a[1]);
+      if(projected == 0) throw Invalid_input("a direction constraint needs a non-zero direction: " + c.describe());
       // The component along the in-plane normal J d of the direction vanishes.
       Constraint_row row;
       row.entries.emplace_back(2 * c.face, -a[1] / projected);

@@ -137,23 +137,13 @@ void Full_spline_solver::pull_back(std::vector<Row>& rows) const
   const Eigen::MatrixXd Gp = ops.G_star_interior() * p_star;
   for(int j = 0; j < m; ++j) Y.col(j) += ops.rotate(Gp.col(j));
 
-  // Harmonic rows, and the residual of (B + omega S) y = Pi r^T as evidence.
+  // Harmonic parts of the rows.
   const int nh = harmonic_dimension();
-  Eigen::MatrixXd target = B;
-  if(nh > 0)
-  {
-    const Eigen::MatrixXd& Uh = hodge_->harmonic_basis();
-    const Eigen::MatrixXd H = Uh.transpose() * B;
-    target -= ops.field_masses().asDiagonal() * (Uh * H);
-    for(int j = 0; j < m; ++j) rows[j].harmonic = H.col(j);
-  }
-  const Eigen::MatrixXd residual = apply_energy(Y) - target;
+  const Eigen::MatrixXd H = nh > 0 ? Eigen::MatrixXd(hodge_->harmonic_basis().transpose() * B) : Eigen::MatrixXd(0, m);
   for(int j = 0; j < m; ++j)
   {
     rows[j].y = Y.col(j);
-    if(nh == 0) rows[j].harmonic.resize(0);
-    const double norm = target.col(j).norm();
-    if(norm > 0) statistics_.energy_residual = std::max(statistics_.energy_residual, residual.col(j).norm() / norm);
+    rows[j].harmonic = H.col(j);
   }
   statistics_.pull_back_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }

@@ -80,9 +80,6 @@ Eigen::MatrixXd projected_block_cg(const std::function<Eigen::MatrixXd(const Eig
 } // namespace internal
 
 namespace {
-// As in the spline solvers: a harmonic direction whose constraint energy is below
-// this fraction of the energy scale is one no constraint sees.
-constexpr double undetermined_harmonic_threshold = 1e-10;
 
 double seconds_since(std::chrono::steady_clock::time_point t)
 {
@@ -113,6 +110,7 @@ int Soft_field_design::add(const Field_constraint& constraint, double weight)
     throw Invalid_input("a soft constraint needs a positive finite weight: " + constraint.describe());
   Entry entry;
   entry.constraint = constraint;
+  entry.weight = weight;
   for(Constraint_row& r : constraint_rows(*operators_, constraint))
   {
     Weighted_row row;
@@ -140,15 +138,10 @@ void Soft_field_design::change(int id, const Field_constraint& constraint, doubl
   auto it = entries_.find(id);
   if(it == entries_.end()) throw Invalid_input("no constraint with id " + std::to_string(id));
   Entry& entry = it->second;
-  const Field_constraint& old = entry.constraint;
-  const bool same_place = old.kind == constraint.kind && old.kind != Constraint_kind::direction &&
-                          old.face == constraint.face && old.vertex == constraint.vertex && old.edge == constraint.edge &&
-                          old.barycentric == constraint.barycentric;
-  const double old_weight = entry.rows.front().weight / (entry.rows.front().row.unit_area_scale * entry.rows.front().row.unit_area_scale);
-  if(same_place && weight == old_weight)
+  if(entry.constraint.same_rows_as(constraint) && weight == entry.weight)
   {
-    const std::vector<Constraint_row> rows = constraint_rows(*operators_, constraint);
-    for(std::size_t k = 0; k < rows.size(); ++k) entry.rows[k].row.value = rows[k].value;
+    const std::vector<double> values = constraint_values(operators_->mesh(), constraint);
+    for(std::size_t k = 0; k < values.size(); ++k) entry.rows[k].row.value = values[k];
     entry.constraint = constraint;
     values_changed();
     return;
@@ -172,7 +165,7 @@ Eigen::MatrixXd Soft_field_design::undetermined_directions(
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(gram);
   std::vector<int> free;
   for(int j = 0; j < nh; ++j)
-    if(!(eigen.eigenvalues()[j] > undetermined_harmonic_threshold * energy_scale_)) free.push_back(j);
+    if(!(eigen.eigenvalues()[j] > internal::undetermined_harmonic_threshold * energy_scale_)) free.push_back(j);
   Eigen::MatrixXd N(nh, free.size());
   for(std::size_t j = 0; j < free.size(); ++j) N.col(j) = eigen.eigenvectors().col(free[j]);
   undetermined_ = static_cast<int>(free.size());

@@ -109,40 +109,17 @@ void Spline_solver::insert(const std::vector<Field_constraint>& constraints, con
   solved_ = false;
 }
 
-namespace {
-bool same_place(const Field_constraint& a, const Field_constraint& b)
-{
-  if(a.kind != b.kind || a.face != b.face || a.vertex != b.vertex || a.edge != b.edge) return false;
-  if(a.kind == Constraint_kind::direction) return false; // the direction is the row itself
-  if(a.kind == Constraint_kind::vector) return true;
-  return (a.vertex >= 0 || a.edge >= 0) || a.barycentric == b.barycentric;
-}
-} // namespace
 
 void Spline_solver::change(Constraint_id id, const Field_constraint& constraint)
 {
   auto it = entries_.find(id);
   if(it == entries_.end()) throw Invalid_input("no constraint with id " + std::to_string(id));
   Entry& entry = it->second;
-  if(same_place(entry.constraint, constraint))
+  if(entry.constraint.same_rows_as(constraint))
   {
     // Only the values change: no new rows (the fast path of interactive edits).
-    if(constraint.kind == Constraint_kind::vector)
-    {
-      const Field_constraint& c = constraint;
-      const std::array<double, 2> a = operators_->mesh().to_frame(c.face, c.vector);
-      const double length = std::sqrt(c.vector[0] * c.vector[0] + c.vector[1] * c.vector[1] + c.vector[2] * c.vector[2]);
-      if(!std::isfinite(length)) throw Invalid_input("non-finite number in constraint: " + c.describe());
-      if(length > 0 && std::hypot(a[0], a[1]) <= 1e-8 * length)
-        throw Invalid_input("the vector is normal to its face: " + c.describe());
-      rows_[entry.first_row].row.value = a[0];
-      rows_[entry.first_row + 1].row.value = a[1];
-    }
-    else
-    {
-      if(!std::isfinite(constraint.value)) throw Invalid_input("non-finite number in constraint: " + constraint.describe());
-      rows_[entry.first_row].row.value = constraint.value;
-    }
+    const std::vector<double> values = constraint_values(operators_->mesh(), constraint);
+    for(int k = 0; k < entry.row_count; ++k) rows_[entry.first_row + k].row.value = values[k];
     entry.constraint = constraint;
     solved_ = false;
     return;
@@ -227,6 +204,7 @@ const Eigen::VectorXd& Spline_solver::solution() const
 const Spline_report& Spline_solver::report() const
 {
   if(!solved_) solve();
+  if(!reported_) make_report();
   return report_;
 }
 
@@ -240,7 +218,16 @@ void Spline_solver::solve() const
   solution_ = Eigen::VectorXd::Zero(space_dimension());
   for(int i = 0; i < n; ++i) solution_ += mu[i] * rows_[i].y;
   if(z.size() > 0) add_harmonic(z, solution_);
+  if(!solution_.allFinite()) throw Numerical_failure("the spline solve produced non-finite values");
+  solved_ = true;
+  reported_ = false;
+}
 
+// The report costs as much as the solve (a pass over every row, the energy): it is
+// made only when asked for, not on every edit.
+void Spline_solver::make_report() const
+{
+  const int n = number_of_rows();
   Spline_report r;
   r.constraints = number_of_constraints();
   r.rows = n;
@@ -249,8 +236,9 @@ void Spline_solver::solve() const
   double largest = 0, residual = 0;
   for(int i = 0; i < n; ++i)
   {
-    largest = std::max(largest, std::abs(c[i]));
-    residual = std::max(residual, std::abs(apply(rows_[i], solution_) - c[i]));
+    const double c = rows_[i].row.value;
+    largest = std::max(largest, std::abs(c));
+    residual = std::max(residual, std::abs(apply(rows_[i], solution_) - c));
   }
   r.constraint_residual = largest > 0 ? residual / largest : residual;
   r.energy = energy(solution_);
@@ -271,10 +259,9 @@ void Spline_solver::solve() const
       << " of the energy scale): it may be large";
     r.warnings.push_back(s.str());
   }
-  if(!std::isfinite(r.energy) || !solution_.allFinite())
-    throw Numerical_failure("the spline solve produced non-finite values");
+  if(!std::isfinite(r.energy)) throw Numerical_failure("the spline's energy is not finite");
   report_ = r;
-  solved_ = true;
+  reported_ = true;
 }
 
 } // namespace Tangent_vector_fields

@@ -93,6 +93,9 @@ struct Field_constraint
   /// The field is parallel to boundary edge `edge` in its face.
   static Field_constraint boundary_alignment(const Intrinsic_mesh& mesh, int edge);
 
+  /// Whether `other` has the same rows as this constraint, so that replacing one by the
+  /// other only changes values (same kind and place; never for directions).
+  bool same_rows_as(const Field_constraint& other) const;
   /// Number of rows: 2 for a vector, 1 otherwise.
   int rows() const { return kind == Constraint_kind::vector ? 2 : 1; }
   /// One line such as "divergence 1.5 at vertex 12", for messages.
@@ -126,6 +129,10 @@ struct Constraint_row
     return s;
   }
 };
+
+/// The values `c` of the rows of `constraint`, checked as `constraint_rows` checks them
+/// but without building the rows (for value edits).
+std::vector<double> constraint_values(const Intrinsic_mesh& mesh, const Field_constraint& constraint);
 
 /// The rows of `constraint` (`rows()` of them).
 /// \throws Invalid_input for an element index out of range, non-finite numbers,

@@ -14,6 +14,7 @@
 #include <CGAL/Tangent_vector_fields/Hodge_solver.h>
 #include <CGAL/Tangent_vector_fields/Sparse_spd_solver.h>
 #include <CGAL/Tangent_vector_fields/internal/Basis_rows.h>
+#include <CGAL/Tangent_vector_fields/internal/Constraint_system.h>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
@@ -69,6 +70,7 @@ protected:
   struct Entry
   {
     Field_constraint constraint;
+    double weight = 1; // as given
     std::vector<Weighted_row> rows;
   };
   /// Called with the rows of a new constraint (which the solver may annotate) before they are stored.

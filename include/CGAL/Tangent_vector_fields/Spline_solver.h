@@ -115,7 +115,8 @@ public:
 
   /// The spline as frame coordinates (`2nf`); solves if constraints changed.
   virtual Eigen::VectorXd field() const = 0;
-  /// The report of the last solve (solves if needed).
+  /// The report of the last solve (solves if needed; made on request, as it costs about
+  /// as much as a solve).
   const Spline_report& report() const;
 
 protected:
@@ -164,13 +165,14 @@ private:
   void insert(const std::vector<Field_constraint>& constraints, const std::vector<Constraint_id>& ids);
   void set_scales();
   void solve() const;
+  void make_report() const;
 
   std::map<Constraint_id, Entry> entries_;
   std::vector<Row> rows_;
   Constraint_id next_id_ = 0;
   std::unique_ptr<internal::Constraint_system> system_;
   int harmonic_dimension_;
-  mutable bool solved_ = false;
+  mutable bool solved_ = false, reported_ = false;
   mutable Eigen::VectorXd solution_;
   mutable Spline_report report_;
 };

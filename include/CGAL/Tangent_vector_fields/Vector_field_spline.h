@@ -52,7 +52,7 @@ public:
   template <class NamedParameters = parameters::Default_named_parameters>
   explicit Vector_field_spline(const Spectral_basis<TriangleMesh>& basis,
                                const NamedParameters& np = parameters::default_values())
-    : intrinsic_(&basis.operators().intrinsic_mesh())
+    : operators_(basis.operators())
   {
     using parameters::choose_parameter;
     using parameters::get_parameter;
@@ -64,13 +64,11 @@ public:
   /// Full resolution on `mesh` (which must outlive this object).
   template <class NamedParameters = parameters::Default_named_parameters>
   explicit Vector_field_spline(const TriangleMesh& mesh, const NamedParameters& np = parameters::default_values())
+    : operators_(mesh, np)
   {
-    Discrete_operators<TriangleMesh> operators(mesh, np);
-    intrinsic_ = &operators.intrinsic_mesh();
     set_index_maps(mesh, np);
-    solver_ = std::make_unique<Full_spline_solver>(std::make_shared<Hodge_solver>(operators.shared_matrices()),
+    solver_ = std::make_unique<Full_spline_solver>(std::make_shared<Hodge_solver>(operators_.shared_matrices()),
                                                    options(np));
-    intrinsic_ = &solver_->operators().mesh();
   }
 
   /// The field equals `v` (projected) in face `f`.
@@ -95,7 +93,7 @@ public:
   Constraint_id add_divergence(face_descriptor f, const Point_3& p, double value)
   {
     const int i = face_index_(f);
-    return add(Field_constraint::divergence_at_point(i, barycentric_coordinates(*intrinsic_, i, triple(p)), value));
+    return add(Field_constraint::divergence_at_point(i, barycentric_coordinates(intrinsic(), i, triple(p)), value));
   }
   /// `curl*_h = value` at edge `e` (positive: counter-clockwise about the normals).
   Constraint_id add_curl(edge_descriptor e, double value)
@@ -107,12 +105,12 @@ public:
   Constraint_id add_curl(face_descriptor f, const Point_3& p, double value)
   {
     const int i = face_index_(f);
-    return add(Field_constraint::curl_at_point(i, barycentric_coordinates(*intrinsic_, i, triple(p)), value));
+    return add(Field_constraint::curl_at_point(i, barycentric_coordinates(intrinsic(), i, triple(p)), value));
   }
   /// The field is parallel to boundary edge `e`.
   Constraint_id add_boundary_alignment(edge_descriptor e)
   {
-    return add(Field_constraint::boundary_alignment(*intrinsic_, edge_index_(e)));
+    return add(Field_constraint::boundary_alignment(intrinsic(), edge_index_(e)));
   }
   /// Adds a constraint given by indices (see `Field_constraint`).
   Constraint_id add(const Field_constraint& c) { return solver_->add(c); }
@@ -139,14 +137,7 @@ public:
   template <class FaceVectorMap>
   void field(FaceVectorMap out) const
   {
-    const Eigen::VectorXd x = solver_->field();
-    const auto& faces = faces_;
-    typedef typename boost::property_traits<FaceVectorMap>::value_type Vector_3;
-    for(std::size_t f = 0; f < faces.size(); ++f)
-    {
-      const auto w = intrinsic_->from_frame(static_cast<int>(f), x[2 * f], x[2 * f + 1]);
-      put(out, faces[f], Vector_3(w[0], w[1], w[2]));
-    }
+    operators_.from_frame_coordinates(solver_->field(), out);
   }
   const Spline_report& report() const { return solver_->report(); }
   const Spline_solver& solver() const { return *solver_; }
@@ -172,8 +163,6 @@ private:
     vertex_index_ = [vim](vertex_descriptor v) { return static_cast<int>(get(vim, v)); };
     edge_index_ = [eim](edge_descriptor e) { return static_cast<int>(get(eim, e)); };
     face_index_ = [fim](face_descriptor f) { return static_cast<int>(get(fim, f)); };
-    faces_.assign(CGAL::num_faces(mesh), face_descriptor());
-    for(face_descriptor f : CGAL::faces(mesh)) faces_[get(fim, f)] = f;
   }
   template <class T>
   static std::array<double, 3> triple(const T& v)
@@ -181,12 +170,13 @@ private:
     return {{CGAL::to_double(v.x()), CGAL::to_double(v.y()), CGAL::to_double(v.z())}};
   }
 
-  const Intrinsic_mesh* intrinsic_ = nullptr;
+  const Intrinsic_mesh& intrinsic() const { return operators_.intrinsic_mesh(); }
+
+  Discrete_operators<TriangleMesh> operators_; // shares the basis' mesh data and matrices
   std::unique_ptr<Spline_solver> solver_;
   std::function<int(vertex_descriptor)> vertex_index_;
   std::function<int(edge_descriptor)> edge_index_;
   std::function<int(face_descriptor)> face_index_;
-  std::vector<face_descriptor> faces_;
 };
 
 /// \brief One-shot tangent vector field spline at full resolution: builds only the

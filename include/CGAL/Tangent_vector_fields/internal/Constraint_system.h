@@ -28,6 +28,11 @@ namespace CGAL {
 namespace Tangent_vector_fields {
 namespace internal {
 
+/// A harmonic direction whose squared singular value in the constraint rows is below
+/// this times the energy scale is one no constraint sees: its coefficient would be
+/// roundoff divided by roundoff.  Seen by a constraint, it is of the order of the scale or larger.
+constexpr double undetermined_harmonic_threshold = 1e-10;
+
 class Constraint_system
 {
 public:
