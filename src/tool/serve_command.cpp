@@ -20,6 +20,7 @@
 
 
 #include <atomic>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -260,6 +261,7 @@ int serve_command(const Arguments& args)
     std::fprintf(stderr, "tvf: warning: no editor page in '%s' (built with npm; see --web-root)\n",
                  server.web_root.c_str());
 
+  std::signal(SIGPIPE, SIG_IGN); // a page that vanishes mid-write ends its session, not the server
   asio::io_context io;
   tcp::acceptor acceptor(io);
   try
