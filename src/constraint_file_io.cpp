@@ -3,11 +3,12 @@
 
 #include <CGAL/Tangent_vector_fields/constraint_file_io.h>
 #include <CGAL/Tangent_vector_fields/errors.h>
+#include <CGAL/Tangent_vector_fields/internal/constraint_json.h>
 
 #include <boost/property_tree/json_parser.hpp>
-#include <boost/property_tree/ptree.hpp>
 
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <iomanip>
 #include <ostream>
@@ -20,29 +21,31 @@ namespace {
 
 typedef boost::property_tree::ptree Tree;
 
+// A JSON number as text (the tree keeps text).  Strict: the whole text must be a number.
+// Overflowing numbers such as 1e999 read as infinite, so that errors say "not finite".
+bool read_number(const Tree& node, double& x)
+{
+  const std::string& text = node.data();
+  if(!node.empty() || text.empty()) return false;
+  char* end = nullptr;
+  x = std::strtod(text.c_str(), &end);
+  return end == text.c_str() + text.size();
+}
+
 struct Reader
 {
   const Tree& node;
-  int position;
+  std::string name;
 
-  [[noreturn]] void fail(const std::string& what) const
-  {
-    throw Invalid_input("constraint " + std::to_string(position) + ": " + what);
-  }
+  [[noreturn]] void fail(const std::string& what) const { throw Invalid_input(name + ": " + what); }
   bool has(const char* key) const { return node.count(key) > 0; }
   double number(const char* key) const
   {
     if(!has(key)) fail(std::string("missing \"") + key + "\"");
-    try
-    {
-      const double x = node.get<double>(key);
-      if(!std::isfinite(x)) fail(std::string("\"") + key + "\" is not finite");
-      return x;
-    }
-    catch(const boost::property_tree::ptree_bad_data&)
-    {
-      fail(std::string("\"") + key + "\" is not a number");
-    }
+    double x = 0;
+    if(!read_number(node.get_child(key), x)) fail(std::string("\"") + key + "\" is not a number");
+    if(!std::isfinite(x)) fail(std::string("\"") + key + "\" is not finite");
+    return x;
   }
   int index(const char* key) const
   {
@@ -57,15 +60,8 @@ struct Reader
     int k = 0;
     for(const auto& child : node.get_child(key))
     {
-      if(!child.first.empty() || k == 3) fail(std::string("\"") + key + "\" must be an array of 3 numbers");
-      try
-      {
-        v[k++] = child.second.get_value<double>();
-      }
-      catch(const boost::property_tree::ptree_bad_data&)
-      {
+      if(!child.first.empty() || k == 3 || !read_number(child.second, v[k++]))
         fail(std::string("\"") + key + "\" must be an array of 3 numbers");
-      }
     }
     if(k != 3) fail(std::string("\"") + key + "\" must be an array of 3 numbers");
     for(double x : v)
@@ -94,9 +90,10 @@ struct Reader
   }
 };
 
-Field_constraint parse(const Tree& node, int position, const Intrinsic_mesh& mesh)
+Field_constraint parse(const Tree& node, const std::string& name, const Intrinsic_mesh& mesh)
 {
-  const Reader r{node, position};
+  const Reader r{node, name};
+  if(!node.data().empty() || node.empty()) r.fail("not a JSON object");
   const std::string type = node.get<std::string>("type", "");
   if(type == "vector") return Field_constraint::vector_in_face(r.index("face"), r.triple("vector"));
   if(type == "direction") return Field_constraint::direction_in_face(r.index("face"), r.triple("direction"));
@@ -128,18 +125,32 @@ Field_constraint parse(const Tree& node, int position, const Intrinsic_mesh& mes
 
 } // namespace
 
-Constraint_file read_constraint_file(std::istream& in, const Operator_matrices& operators)
+namespace internal {
+
+Field_constraint parse_constraint(const boost::property_tree::ptree& node, const std::string& name,
+                                  const Operator_matrices& operators, double* weight)
 {
-  const Intrinsic_mesh& mesh = operators.mesh();
-  Tree root;
+  Field_constraint c = parse(node, name, operators.mesh());
+  // Validates indices and values now, so that errors name the constraint.
   try
   {
-    boost::property_tree::read_json(in, root);
+    constraint_rows(operators, c);
   }
-  catch(const boost::property_tree::json_parser_error& e)
+  catch(const Invalid_input& e)
   {
-    throw Invalid_input("constraint file: " + e.message() + " at line " + std::to_string(e.line()));
+    throw Invalid_input(name + ": " + e.what());
   }
+  if(weight)
+  {
+    const Reader r{node, name};
+    *weight = r.has("weight") ? r.number("weight") : 1.0;
+    if(!(*weight > 0)) r.fail("the weight must be positive");
+  }
+  return c;
+}
+
+Constraint_file parse_constraint_file(const boost::property_tree::ptree& root, const Operator_matrices& operators)
+{
   Constraint_file file;
   if(root.count("omega"))
   {
@@ -158,24 +169,30 @@ Constraint_file read_constraint_file(std::istream& in, const Operator_matrices& 
   int position = 0;
   for(const auto& child : root.get_child("constraints"))
   {
-    Field_constraint c = parse(child.second, position, mesh);
-    // Validates indices and values now, so that errors name the constraint.
-    try
-    {
-      constraint_rows(operators, c);
-    }
-    catch(const Invalid_input& e)
-    {
-      throw Invalid_input("constraint " + std::to_string(position) + ": " + e.what());
-    }
-    const double weight = child.second.get<double>("weight", 1.0);
-    if(!std::isfinite(weight) || !(weight > 0))
-      throw Invalid_input("constraint " + std::to_string(position) + ": the weight must be positive");
-    file.constraints.push_back(c);
+    if(!child.first.empty()) throw Invalid_input("constraint file: \"constraints\" must be an array");
+    double weight = 1;
+    file.constraints.push_back(
+        parse_constraint(child.second, "constraint " + std::to_string(position), operators, &weight));
     file.weights.push_back(weight);
     ++position;
   }
   return file;
+}
+
+} // namespace internal
+
+Constraint_file read_constraint_file(std::istream& in, const Operator_matrices& operators)
+{
+  Tree root;
+  try
+  {
+    boost::property_tree::read_json(in, root);
+  }
+  catch(const boost::property_tree::json_parser_error& e)
+  {
+    throw Invalid_input("constraint file: " + e.message() + " at line " + std::to_string(e.line()));
+  }
+  return internal::parse_constraint_file(root, operators);
 }
 
 Constraint_file read_constraint_file(const std::string& path, const Operator_matrices& operators)

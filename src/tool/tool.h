@@ -73,6 +73,7 @@ int design_command(const Arguments&);
 int render_command(const Arguments&);
 int streamlines_command(const Arguments&);
 int export_command(const Arguments&);
+int serve_command(const Arguments&);
 
 /// \brief The command line of one subcommand: options, one positional argument, `--help`.
 ///

@@ -33,7 +33,8 @@ const std::vector<Subcommand>& subcommands()
       {"design", "design a field from constraints (JSON): splines, full or reduced, or soft", design_command},
       {"render", "draw a field: colours, streamlines, fur or arrows (PNG or SVG)", render_command},
       {"streamlines", "trace evenly spaced streamlines or fur strokes (OBJ, PLY, VTP)", streamlines_command},
-      {"export", "convert a field between .tvf, .ply, .vtp and .rawfield", export_command}};
+      {"export", "convert a field between .tvf, .ply, .vtp and .rawfield", export_command},
+      {"serve", "start the interactive field editor (a local web server and page)", serve_command}};
   return list;
 }
 

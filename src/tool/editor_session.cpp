@@ -1,0 +1,821 @@
+// Copyright (c) 2026 The Tangent_vector_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The editor's sessions: parse and check a message, apply it to the reduced (and, on
+// request, the full) spline solver, answer with the field.  See doc/editor_protocol.md.
+
+#include "editor_session.h"
+
+#include <CGAL/Tangent_vector_fields/Eigenfield_basis.h>
+#include <CGAL/Tangent_vector_fields/Full_spline_solver.h>
+#include <CGAL/Tangent_vector_fields/Hodge_solver.h>
+#include <CGAL/Tangent_vector_fields/Reduced_spline_solver.h>
+#include <CGAL/Tangent_vector_fields/Streamline_tracer.h>
+#include <CGAL/Tangent_vector_fields/constraint_file_io.h>
+#include <CGAL/Tangent_vector_fields/errors.h>
+#include <CGAL/Tangent_vector_fields/internal/constraint_json.h>
+
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+namespace tvf_tool {
+
+namespace {
+
+typedef boost::property_tree::ptree Tree;
+typedef std::chrono::steady_clock Clock;
+
+/// A message the session refuses; its text goes to the page.
+class Message_error : public std::runtime_error
+{
+public:
+  using std::runtime_error::runtime_error;
+};
+
+double milliseconds_since(Clock::time_point start)
+{
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// --- JSON out -----------------------------------------------------------------------------------
+
+std::string quote(const std::string& text)
+{
+  std::string q = "\"";
+  for(unsigned char c : text)
+  {
+    if(c == '"' || c == '\\') q += '\\', q += char(c);
+    else if(c == '\n') q += "\\n";
+    else if(c < 0x20)
+    {
+      char buffer[8];
+      std::snprintf(buffer, sizeof buffer, "\\u%04x", c);
+      q += buffer;
+    }
+    else q += char(c);
+  }
+  return q + "\"";
+}
+
+std::string number(double x)
+{
+  if(!std::isfinite(x)) return "null";
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.17g", x);
+  return buffer;
+}
+
+std::string short_number(double x) // timings and sizes: 6 digits are plenty
+{
+  if(!std::isfinite(x)) return "null";
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.6g", x);
+  return buffer;
+}
+
+template <class Range, class Format>
+std::string json_array(const Range& values, Format format)
+{
+  std::string s = "[";
+  for(const auto& v : values) s += (s.size() > 1 ? "," : "") + format(v);
+  return s + "]";
+}
+
+// --- binary messages ----------------------------------------------------------------------------
+
+struct Array_out
+{
+  std::string name;
+  bool is_float; // float32, else uint32
+  const void* data;
+  std::size_t length; // entries
+};
+
+/// `uint32 n`, `n` bytes of JSON header, zero padding to 4 bytes, then the arrays.
+Outgoing binary_message(const std::string& members, const std::vector<Array_out>& arrays)
+{
+  std::string header = "{" + members + ",\"arrays\":[";
+  for(std::size_t i = 0; i < arrays.size(); ++i)
+    header += (i ? "," : "") + std::string("{\"name\":") + quote(arrays[i].name) + ",\"type\":\"" +
+              (arrays[i].is_float ? "float32" : "uint32") + "\",\"length\":" + std::to_string(arrays[i].length) + "}";
+  header += "]}";
+  Outgoing out;
+  out.binary = true;
+  const std::size_t padded = (4 + header.size() + 3) / 4 * 4;
+  std::size_t size = padded;
+  for(const Array_out& a : arrays) size += 4 * a.length;
+  out.data.reserve(size);
+  const std::uint32_t n = static_cast<std::uint32_t>(header.size());
+  const unsigned char length_bytes[4] = {static_cast<unsigned char>(n), static_cast<unsigned char>(n >> 8),
+                                         static_cast<unsigned char>(n >> 16), static_cast<unsigned char>(n >> 24)};
+  out.data.append(reinterpret_cast<const char*>(length_bytes), 4);
+  out.data += header;
+  out.data.append(padded - out.data.size(), '\0');
+  static_assert(sizeof(float) == 4, "float32 arrays");
+  for(const Array_out& a : arrays) out.data.append(static_cast<const char*>(a.data), 4 * a.length); // x86: little-endian
+  return out;
+}
+
+// --- JSON in ------------------------------------------------------------------------------------
+
+/// Deepest nesting of objects and arrays in `text` (strings skipped).  Checked before
+/// parsing: the JSON parser recurses, and a megabyte of '[' would overflow the stack.
+int json_depth(const std::string& text)
+{
+  int depth = 0, deepest = 0;
+  bool in_string = false, escaped = false;
+  for(char c : text)
+  {
+    if(in_string)
+    {
+      if(escaped) escaped = false;
+      else if(c == '\\') escaped = true;
+      else if(c == '"') in_string = false;
+    }
+    else if(c == '"') in_string = true;
+    else if(c == '{' || c == '[') deepest = std::max(deepest, ++depth);
+    else if(c == '}' || c == ']') --depth;
+  }
+  return deepest;
+}
+
+const Tree& member(const Tree& tree, const char* key)
+{
+  const auto it = tree.find(key);
+  if(it == tree.not_found()) throw Message_error(std::string("missing \"") + key + "\"");
+  return it->second;
+}
+
+double number_value(const Tree& node, const std::string& key)
+{
+  const std::string& text = node.data();
+  if(!node.empty() || text.empty()) throw Message_error("\"" + key + "\" must be a number");
+  char* end = nullptr;
+  const double x = std::strtod(text.c_str(), &end);
+  if(end != text.c_str() + text.size()) throw Message_error("\"" + key + "\" must be a number");
+  if(!std::isfinite(x)) throw Message_error("\"" + key + "\" is not finite"); // 1e999 parses to inf
+  return x;
+}
+
+double number_member(const Tree& tree, const char* key) { return number_value(member(tree, key), key); }
+
+long long integer_member(const Tree& tree, const char* key, long long lowest, long long highest)
+{
+  const double x = number_member(tree, key);
+  if(x != std::floor(x) || x < double(lowest) || x > double(highest))
+    throw Message_error(std::string("\"") + key + "\" must be an integer in [" + std::to_string(lowest) + ", " +
+                        std::to_string(highest) + "]");
+  return static_cast<long long>(x);
+}
+
+std::string text_member(const Tree& tree, const char* key)
+{
+  const Tree& node = member(tree, key);
+  if(!node.empty()) throw Message_error(std::string("\"") + key + "\" must be a string");
+  return node.data();
+}
+
+TVF::Spline_options spline_options(double omega)
+{
+  TVF::Spline_options options;
+  options.omega = omega;
+  return options;
+}
+
+} // namespace
+
+// --- the model ----------------------------------------------------------------------------------
+
+Editor_model::Editor_model(std::shared_ptr<const TVF::Operator_matrices> matrices, std::shared_ptr<TVF::Hodge_solver> hodge,
+                           std::string name, double diagonal, int initial_basis_size, Editor_limits limits)
+  : matrices_(std::move(matrices)), hodge_(std::move(hodge)), name_(std::move(name)), diagonal_(diagonal),
+    initial_basis_size_(initial_basis_size), limits_(limits)
+{
+  status_.stage = "starting";
+}
+
+Editor_model::~Editor_model() = default;
+
+void Editor_model::set_progress(const std::string& stage, double fraction)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  status_.stage = stage;
+  status_.fraction = std::min(1.0, std::max(0.0, fraction));
+}
+
+void Editor_model::set_basis(std::shared_ptr<const TVF::Eigenfield_basis> basis)
+{
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    basis_ = std::move(basis);
+    status_.ready = true;
+    status_.stage = "ready";
+    status_.fraction = 1;
+  }
+  changed_.notify_all();
+}
+
+void Editor_model::set_failure(const std::string& reason)
+{
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    status_.failed = true;
+    status_.error = reason;
+  }
+  changed_.notify_all();
+}
+
+Editor_model::Status Editor_model::wait(std::chrono::milliseconds timeout) const
+{
+  std::unique_lock<std::mutex> lock(mutex_);
+  changed_.wait_for(lock, timeout, [this] { return status_.ready || status_.failed; });
+  return status_;
+}
+
+std::shared_ptr<const TVF::Eigenfield_basis> Editor_model::basis() const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  return basis_;
+}
+
+const Outgoing& Editor_model::mesh_message() const
+{
+  std::call_once(mesh_once_, [this] {
+    const TVF::Intrinsic_mesh& mesh = matrices_->mesh();
+    std::vector<float> positions;
+    positions.reserve(3 * mesh.number_of_vertices());
+    for(int v = 0; v < mesh.number_of_vertices(); ++v)
+      for(int k = 0; k < 3; ++k) positions.push_back(static_cast<float>(mesh.position(v)[k]));
+    std::vector<std::uint32_t> triangles, edges, face_edges, boundary;
+    for(int f = 0; f < mesh.number_of_faces(); ++f)
+      for(int k = 0; k < 3; ++k)
+      {
+        triangles.push_back(mesh.face_vertices(f)[k]);
+        face_edges.push_back(mesh.face_edges(f)[k]);
+      }
+    for(int e = 0; e < mesh.number_of_edges(); ++e)
+    {
+      edges.push_back(mesh.edge_vertices(e)[0]);
+      edges.push_back(mesh.edge_vertices(e)[1]);
+      if(mesh.is_boundary_edge(e)) boundary.push_back(e);
+    }
+    mesh_message_ = std::make_unique<Outgoing>(binary_message(
+        "\"type\":\"mesh\"", {{"positions", true, positions.data(), positions.size()},
+                              {"triangles", false, triangles.data(), triangles.size()},
+                              {"edges", false, edges.data(), edges.size()},
+                              {"face_edges", false, face_edges.data(), face_edges.size()},
+                              {"boundary_edges", false, boundary.data(), boundary.size()}}));
+  });
+  return *mesh_message_;
+}
+
+// --- the session --------------------------------------------------------------------------------
+
+struct Editor_session::Request
+{
+  Tree tree;
+  std::string type;
+  bool has_id = false;
+  long long id = 0;
+  Clock::time_point received;
+  const Send* send = nullptr;
+
+  std::string echo() const { return has_id ? ",\"request\":" + std::to_string(id) : std::string(); }
+  void text(const std::string& members) const
+  {
+    Outgoing out;
+    out.data = "{" + members + echo() + "}";
+    (*send)(out);
+  }
+  void progress(const std::string& stage, double fraction) const
+  {
+    text("\"type\":\"progress\",\"stage\":" + quote(stage) + ",\"fraction\":" + short_number(fraction));
+  }
+};
+
+struct Editor_session::Entry
+{
+  TVF::Field_constraint constraint;
+  double weight = 1;
+  TVF::Constraint_id reduced = -1, full = -1;
+};
+
+Editor_session::Editor_session(std::shared_ptr<const Editor_model> model) : model_(std::move(model)) {}
+
+Editor_session::~Editor_session() = default;
+
+void Editor_session::refuse_binary(std::size_t bytes, const Send& send)
+{
+  send({false, "{\"type\":\"error\",\"message\":" +
+                   quote("binary messages are not accepted (" + std::to_string(bytes) + " bytes): send JSON text") +
+                   "}"});
+}
+
+void Editor_session::refuse_oversized(std::size_t bytes, const Send& send)
+{
+  send({false, "{\"type\":\"error\",\"message\":" +
+                   quote("message of " + std::to_string(bytes) + " bytes or more exceeds the limit of " +
+                         std::to_string(model_->limits().max_message_bytes) + " bytes") +
+                   "}"});
+}
+
+void Editor_session::handle_text(const std::string& text, const Send& send)
+{
+  Request request;
+  request.received = Clock::now();
+  request.send = &send;
+  try
+  {
+    if(text.size() > model_->limits().max_message_bytes) return refuse_oversized(text.size(), send);
+    if(json_depth(text) > model_->limits().max_json_depth)
+      throw Message_error("JSON nested deeper than " + std::to_string(model_->limits().max_json_depth) + " levels");
+    std::istringstream in(text);
+    try
+    {
+      boost::property_tree::read_json(in, request.tree);
+    }
+    catch(const boost::property_tree::json_parser_error& e)
+    {
+      throw Message_error("not JSON: " + e.message() + " at line " + std::to_string(e.line()));
+    }
+    if(request.tree.empty() || !request.tree.data().empty() || request.tree.front().first.empty())
+      throw Message_error("a message must be a JSON object");
+    if(request.tree.count("request"))
+    {
+      request.id = integer_member(request.tree, "request", 0, (1LL << 53));
+      request.has_id = true;
+    }
+    request.type = text_member(request.tree, "type");
+    dispatch(request);
+  }
+  catch(const Message_error& e)
+  {
+    request.text("\"type\":\"error\",\"message\":" + quote(e.what()));
+  }
+  catch(const TVF::Invalid_input& e) // malformed or infeasible constraints, bad sizes
+  {
+    request.text("\"type\":\"error\",\"message\":" + quote(e.what()));
+  }
+  catch(const std::bad_alloc&)
+  {
+    request.text("\"type\":\"error\",\"message\":\"out of memory\"");
+  }
+  catch(const boost::property_tree::ptree_error& e)
+  {
+    request.text("\"type\":\"error\",\"message\":" + quote(std::string("malformed message: ") + e.what()));
+  }
+}
+
+void Editor_session::dispatch(Request& r)
+{
+  static const std::map<std::string, void (Editor_session::*)(Request&)> handlers = {
+      {"hello", &Editor_session::hello},
+      {"add", &Editor_session::add},
+      {"change", &Editor_session::change},
+      {"remove", &Editor_session::remove},
+      {"clear", &Editor_session::clear},
+      {"load", &Editor_session::load},
+      {"save", &Editor_session::save},
+      {"set_omega", &Editor_session::set_omega},
+      {"set_basis_size", &Editor_session::set_basis_size},
+      {"set_solver", &Editor_session::set_solver},
+      {"set_display", &Editor_session::set_display}};
+  if(r.type == "ping") return r.text("\"type\":\"pong\"");
+  const auto it = handlers.find(r.type);
+  if(it == handlers.end())
+    throw Message_error("unknown message type " + quote(r.type.substr(0, 64)) +
+                        " (hello, add, change, remove, clear, load, save, set_omega, set_basis_size, "
+                        "set_solver, set_display, ping)");
+  (this->*it->second)(r);
+}
+
+void Editor_session::require_ready(const Request&) const
+{
+  if(!reduced_) throw Message_error("say hello first (the session starts when the basis is ready)");
+}
+
+std::string Editor_session::info_json() const
+{
+  const TVF::Intrinsic_mesh& mesh = model_->matrices().mesh();
+  const TVF::Mesh_topology& topology = mesh.topology();
+  const Editor_limits& limits = model_->limits();
+  return "\"type\":\"info\",\"mesh\":{\"name\":" + quote(model_->name()) +
+         ",\"vertices\":" + std::to_string(mesh.number_of_vertices()) +
+         ",\"faces\":" + std::to_string(mesh.number_of_faces()) + ",\"edges\":" + std::to_string(mesh.number_of_edges()) +
+         ",\"genus\":" + std::to_string(topology.total_genus()) +
+         ",\"boundary_loops\":" + std::to_string(topology.number_of_boundary_loops()) +
+         ",\"components\":" + std::to_string(topology.number_of_components()) +
+         ",\"area\":" + number(model_->matrices().face_areas().sum()) + ",\"diagonal\":" + number(model_->diagonal()) +
+         ",\"mean_edge_length\":" + number(mesh.mean_edge_length()) + "},\"basis\":{\"available\":" +
+         std::to_string(reduced_->basis().size()) + ",\"size\":" + std::to_string(reduced_->basis_size()) +
+         ",\"harmonic\":" + std::to_string(reduced_->basis().number_of_harmonic()) + "},\"omega\":" + number(omega_) +
+         ",\"solver\":\"" + (use_full_ ? "full" : "reduced") + "\",\"display\":{\"lines\":" + quote(display_.lines) +
+         ",\"strokes\":" + std::to_string(display_.strokes) + ",\"length\":" + number(display_.length) +
+         ",\"separation\":" + number(display_.separation) + ",\"scalar\":" + quote(display_.scalar) +
+         "},\"limits\":{\"max_message_bytes\":" + std::to_string(limits.max_message_bytes) +
+         ",\"max_constraints\":" + std::to_string(limits.max_constraints) +
+         ",\"max_strokes\":" + std::to_string(limits.max_strokes) + "}";
+}
+
+void Editor_session::hello(Request& r)
+{
+  for(;;)
+  {
+    const Editor_model::Status status = model_->wait(std::chrono::milliseconds(250));
+    if(status.ready) break;
+    if(status.failed) throw Message_error("the basis could not be made: " + status.error);
+    r.text("\"type\":\"status\",\"stage\":" + quote(status.stage) + ",\"fraction\":" + short_number(status.fraction));
+  }
+  if(!reduced_)
+  {
+    const auto basis = model_->basis();
+    const int size = std::min(model_->initial_basis_size() > 0 ? model_->initial_basis_size() : basis->size(), basis->size());
+    reduced_ = std::make_unique<TVF::Reduced_spline_solver>(basis, size, spline_options(omega_));
+  }
+  r.text(info_json());
+  (*r.send)(model_->mesh_message());
+  send_field(r);
+}
+
+void Editor_session::add(Request& r)
+{
+  require_ready(r);
+  if(static_cast<int>(entries_.size()) >= model_->limits().max_constraints)
+    throw Message_error("too many constraints (the limit is " + std::to_string(model_->limits().max_constraints) + ")");
+  Entry entry;
+  entry.constraint = TVF::internal::parse_constraint(member(r.tree, "constraint"), "constraint", model_->matrices(),
+                                                     &entry.weight);
+  entry.reduced = reduced_->add(entry.constraint);
+  if(use_full_)
+  {
+    try
+    {
+      std::lock_guard<std::mutex> lock(model_->full_solver_mutex());
+      r.progress("full solution: pulling back the new constraint", 0);
+      entry.full = full_->add(entry.constraint);
+    }
+    catch(...)
+    {
+      reduced_->remove(entry.reduced);
+      throw;
+    }
+  }
+  const int id = next_id_++;
+  entries_[id] = entry;
+  r.text("\"type\":\"added\",\"id\":" + std::to_string(id));
+  send_field(r);
+}
+
+void Editor_session::change(Request& r)
+{
+  require_ready(r);
+  const int id = static_cast<int>(integer_member(r.tree, "id", 0, 1 << 30));
+  const auto it = entries_.find(id);
+  if(it == entries_.end()) throw Message_error("no constraint with id " + std::to_string(id));
+  Entry& entry = it->second;
+  double weight = 1;
+  const TVF::Field_constraint constraint =
+      TVF::internal::parse_constraint(member(r.tree, "constraint"), "constraint", model_->matrices(), &weight);
+  const TVF::Field_constraint old = entry.constraint;
+  reduced_->change(entry.reduced, constraint); // unchanged if it throws
+  if(use_full_)
+  {
+    try
+    {
+      std::lock_guard<std::mutex> lock(model_->full_solver_mutex());
+      if(!old.same_rows_as(constraint)) r.progress("full solution: pulling back the moved constraint", 0);
+      full_->change(entry.full, constraint);
+    }
+    catch(...)
+    {
+      reduced_->change(entry.reduced, old);
+      throw;
+    }
+  }
+  entry.constraint = constraint;
+  entry.weight = weight;
+  send_field(r);
+}
+
+void Editor_session::remove(Request& r)
+{
+  require_ready(r);
+  const int id = static_cast<int>(integer_member(r.tree, "id", 0, 1 << 30));
+  const auto it = entries_.find(id);
+  if(it == entries_.end()) throw Message_error("no constraint with id " + std::to_string(id));
+  reduced_->remove(it->second.reduced);
+  if(use_full_)
+  {
+    std::lock_guard<std::mutex> lock(model_->full_solver_mutex());
+    full_->remove(it->second.full);
+  }
+  entries_.erase(it);
+  send_field(r);
+}
+
+void Editor_session::clear(Request& r)
+{
+  require_ready(r);
+  reduced_->clear();
+  if(use_full_)
+  {
+    std::lock_guard<std::mutex> lock(model_->full_solver_mutex());
+    full_->clear();
+  }
+  entries_.clear();
+  send_field(r);
+}
+
+void Editor_session::load(Request& r)
+{
+  require_ready(r);
+  const TVF::Constraint_file file = TVF::internal::parse_constraint_file(member(r.tree, "file"), model_->matrices());
+  if(static_cast<int>(file.constraints.size()) > model_->limits().max_constraints)
+    throw Message_error("too many constraints (" + std::to_string(file.constraints.size()) + "; the limit is " +
+                        std::to_string(model_->limits().max_constraints) + ")");
+  const double omega = file.has_omega ? file.omega : omega_;
+  // All or nothing: new solvers, swapped in once every constraint fitted.
+  auto reduced =
+      std::make_unique<TVF::Reduced_spline_solver>(model_->basis(), reduced_->basis_size(), spline_options(omega));
+  const std::vector<TVF::Constraint_id> reduced_ids = reduced->add(file.constraints);
+  std::unique_ptr<TVF::Full_spline_solver> full;
+  std::vector<TVF::Constraint_id> full_ids;
+  if(use_full_)
+  {
+    std::lock_guard<std::mutex> lock(model_->full_solver_mutex());
+    full = std::make_unique<TVF::Full_spline_solver>(model_->hodge(), spline_options(omega));
+    r.progress("full solution: pulling back " + std::to_string(file.constraints.size()) + " constraints", 0);
+    full_ids = full->add(file.constraints);
+  }
+  reduced_ = std::move(reduced);
+  full_ = std::move(full);
+  omega_ = omega;
+  entries_.clear();
+  std::vector<int> ids;
+  for(std::size_t i = 0; i < file.constraints.size(); ++i)
+  {
+    Entry entry;
+    entry.constraint = file.constraints[i];
+    entry.weight = file.weights[i];
+    entry.reduced = reduced_ids[i];
+    if(use_full_) entry.full = full_ids[i];
+    ids.push_back(next_id_);
+    entries_[next_id_++] = entry;
+  }
+  r.text("\"type\":\"loaded\",\"ids\":" + json_array(ids, [](int i) { return std::to_string(i); }) +
+         ",\"omega\":" + number(omega_));
+  send_field(r);
+}
+
+void Editor_session::save(Request& r)
+{
+  require_ready(r);
+  TVF::Constraint_file file;
+  file.omega = omega_;
+  file.has_omega = true;
+  std::vector<int> ids;
+  for(const auto& e : entries_)
+  {
+    ids.push_back(e.first);
+    file.constraints.push_back(e.second.constraint);
+    file.weights.push_back(e.second.weight);
+  }
+  std::ostringstream out;
+  TVF::write_constraint_file(out, file, model_->matrices().mesh());
+  r.text("\"type\":\"constraints\",\"ids\":" + json_array(ids, [](int i) { return std::to_string(i); }) +
+         ",\"file\":" + out.str());
+}
+
+void Editor_session::set_omega(Request& r)
+{
+  require_ready(r);
+  const double omega = number_member(r.tree, "omega");
+  if(omega < 0 || omega > 1e12) throw Message_error("\"omega\" must lie in [0, 1e12]");
+  reduced_->set_omega(omega);
+  if(use_full_)
+  {
+    std::lock_guard<std::mutex> lock(model_->full_solver_mutex());
+    r.progress("full solution: new tension, pulling back every constraint", 0);
+    full_->set_omega(omega);
+  }
+  omega_ = omega;
+  send_field(r);
+}
+
+void Editor_session::set_basis_size(Request& r)
+{
+  require_ready(r);
+  const int available = reduced_->basis().size();
+  const int size = static_cast<int>(integer_member(r.tree, "size", 1, available));
+  if(size != reduced_->basis_size())
+  {
+    auto reduced = std::make_unique<TVF::Reduced_spline_solver>(model_->basis(), size, spline_options(omega_));
+    std::vector<TVF::Field_constraint> constraints;
+    for(const auto& e : entries_) constraints.push_back(e.second.constraint);
+    std::vector<TVF::Constraint_id> ids;
+    try
+    {
+      ids = reduced->add(constraints); // all or nothing
+    }
+    catch(const TVF::Invalid_input& e)
+    {
+      throw Message_error("the constraints do not fit a basis of " + std::to_string(size) + " fields: " + e.what());
+    }
+    reduced_ = std::move(reduced);
+    std::size_t i = 0;
+    for(auto& e : entries_) e.second.reduced = ids[i++];
+  }
+  send_field(r);
+}
+
+void Editor_session::sync_full(Request& r)
+{
+  std::lock_guard<std::mutex> lock(model_->full_solver_mutex());
+  r.progress("full solution: factoring", 0);
+  auto full = std::make_unique<TVF::Full_spline_solver>(model_->hodge(), spline_options(omega_));
+  // In chunks, so that the page sees progress (a batch of pull-backs shares the solves' set-up).
+  std::vector<std::map<int, Entry>::iterator> order;
+  for(auto it = entries_.begin(); it != entries_.end(); ++it) order.push_back(it);
+  const std::size_t chunk = std::max<std::size_t>(1, order.size() / 10);
+  for(std::size_t start = 0; start < order.size(); start += chunk)
+  {
+    const std::size_t end = std::min(order.size(), start + chunk);
+    std::vector<TVF::Field_constraint> constraints;
+    for(std::size_t i = start; i < end; ++i) constraints.push_back(order[i]->second.constraint);
+    const std::vector<TVF::Constraint_id> ids = full->add(constraints);
+    for(std::size_t i = start; i < end; ++i) order[i]->second.full = ids[i - start];
+    r.progress("full solution: pulled back " + std::to_string(end) + " of " + std::to_string(order.size()) +
+                   " constraints",
+               double(end) / order.size());
+  }
+  full_ = std::move(full);
+}
+
+void Editor_session::set_solver(Request& r)
+{
+  require_ready(r);
+  const std::string solver = text_member(r.tree, "solver");
+  if(solver != "reduced" && solver != "full") throw Message_error("\"solver\" must be \"reduced\" or \"full\"");
+  if(solver == "full" && !use_full_)
+  {
+    sync_full(r);
+    use_full_ = true;
+  }
+  else if(solver == "reduced")
+  {
+    use_full_ = false;
+    full_.reset(); // its pull-backs are big (one field per row); keep nothing we do not show
+  }
+  send_field(r);
+}
+
+void Editor_session::set_display(Request& r)
+{
+  require_ready(r);
+  Display display = display_;
+  const Tree& t = r.tree;
+  if(t.count("lines"))
+  {
+    display.lines = text_member(t, "lines");
+    if(display.lines != "fur" && display.lines != "streamlines" && display.lines != "none")
+      throw Message_error("\"lines\" must be \"fur\", \"streamlines\" or \"none\"");
+  }
+  if(t.count("scalar"))
+  {
+    display.scalar = text_member(t, "scalar");
+    if(display.scalar != "divergence" && display.scalar != "curl" && display.scalar != "none")
+      throw Message_error("\"scalar\" must be \"divergence\", \"curl\" or \"none\"");
+  }
+  if(t.count("strokes")) display.strokes = static_cast<int>(integer_member(t, "strokes", 1, model_->limits().max_strokes));
+  if(t.count("length"))
+  {
+    display.length = number_member(t, "length");
+    if(!(display.length > 0 && display.length <= 0.5)) throw Message_error("\"length\" must lie in (0, 0.5]");
+  }
+  if(t.count("separation"))
+  {
+    display.separation = number_member(t, "separation");
+    if(!(display.separation >= 0.002 && display.separation <= 0.5))
+      throw Message_error("\"separation\" must lie in [0.002, 0.5]");
+  }
+  display_ = display;
+  send_field(r);
+}
+
+void Editor_session::send_field(Request& r)
+{
+  const TVF::Intrinsic_mesh& mesh = model_->matrices().mesh();
+  const int nf = mesh.number_of_faces();
+
+  Clock::time_point start = Clock::now();
+  reduced_->coefficients(); // the solve (the small system)
+  const double solve_ms = milliseconds_since(start);
+  start = Clock::now();
+  Eigen::VectorXd x = reduced_->field();
+  double reconstruct_ms = milliseconds_since(start);
+  const TVF::Spline_report* report = &reduced_->report();
+
+  std::string full_timing, full_difference;
+  if(use_full_)
+  {
+    std::lock_guard<std::mutex> lock(model_->full_solver_mutex());
+    start = Clock::now();
+    Eigen::VectorXd x_full = full_->field();
+    const double full_ms = milliseconds_since(start);
+    const Eigen::VectorXd& areas = model_->matrices().face_areas();
+    double difference = 0, norm = 0;
+    for(int f = 0; f < nf; ++f)
+    {
+      const double dx = x[2 * f] - x_full[2 * f], dy = x[2 * f + 1] - x_full[2 * f + 1];
+      difference += areas[f] * (dx * dx + dy * dy);
+      norm += areas[f] * (x_full[2 * f] * x_full[2 * f] + x_full[2 * f + 1] * x_full[2 * f + 1]);
+    }
+    full_timing = ",\"full_ms\":" + short_number(full_ms);
+    full_difference = ",\"difference\":" + number(norm > 0 ? std::sqrt(difference / norm) : std::sqrt(difference));
+    x.swap(x_full);
+    report = &full_->report();
+  }
+
+  // 3D vectors (float32): what the page draws and the test checks.
+  start = Clock::now();
+  std::vector<float> vectors(3 * static_cast<std::size_t>(nf));
+  double magnitude_max = 0;
+  for(int f = 0; f < nf; ++f)
+  {
+    const auto v = mesh.from_frame(f, x[2 * f], x[2 * f + 1]);
+    for(int k = 0; k < 3; ++k) vectors[3 * f + k] = static_cast<float>(v[k]);
+    magnitude_max = std::max(magnitude_max, std::hypot(x[2 * f], x[2 * f + 1]));
+  }
+  reconstruct_ms += milliseconds_since(start);
+
+  std::vector<Array_out> arrays = {{"vectors", true, vectors.data(), vectors.size()}};
+  std::vector<float> scalar;
+  double scalar_ms = 0, scalar_min = 0, scalar_max = 0;
+  if(display_.scalar != "none")
+  {
+    start = Clock::now();
+    const Eigen::VectorXd s =
+        display_.scalar == "divergence" ? model_->matrices().divergence(x) : model_->matrices().curl(x);
+    scalar.assign(s.data(), s.data() + s.size());
+    scalar_min = s.size() ? s.minCoeff() : 0;
+    scalar_max = s.size() ? s.maxCoeff() : 0;
+    arrays.push_back({"scalar", true, scalar.data(), scalar.size()});
+    scalar_ms = milliseconds_since(start);
+  }
+  std::vector<float> lines;
+  double lines_ms = 0;
+  if(display_.lines != "none")
+  {
+    start = Clock::now();
+    const TVF::Streamline_tracer tracer(model_->matrices().shared_mesh(), x);
+    std::vector<TVF::Streamline> traced;
+    if(display_.lines == "fur")
+    {
+      TVF::Fur_options fur;
+      fur.number_of_strokes = display_.strokes;
+      fur.length = display_.length;
+      fur.scale_length_by_magnitude = true;
+      traced = tracer.fur(fur);
+    }
+    else
+    {
+      TVF::Evenly_spaced_options even;
+      even.separation = display_.separation;
+      traced = tracer.evenly_spaced(even);
+    }
+    for(const TVF::Streamline& s : traced)
+      for(std::size_t i = 0; i + 1 < s.points.size(); ++i)
+        for(const auto& p : {s.points[i], s.points[i + 1]})
+          for(int k = 0; k < 3; ++k) lines.push_back(static_cast<float>(p[k]));
+    arrays.push_back({"lines", true, lines.data(), lines.size()});
+    lines_ms = milliseconds_since(start);
+  }
+
+  std::vector<int> ids;
+  for(const auto& e : entries_) ids.push_back(e.first);
+  const std::string warnings = json_array(report->warnings, [](const std::string& w) { return quote(w); });
+  std::string members = "\"type\":\"field\"" + r.echo() + ",\"solver\":\"" + (use_full_ ? "full" : "reduced") +
+                        "\",\"basis_size\":" + std::to_string(reduced_->basis_size()) + ",\"omega\":" + number(omega_) +
+                        ",\"ids\":" + json_array(ids, [](int i) { return std::to_string(i); }) +
+                        ",\"report\":{\"residual\":" + number(report->constraint_residual) +
+                        ",\"undetermined_harmonic\":" + std::to_string(report->undetermined_harmonic) +
+                        ",\"warnings\":" + warnings + "},\"magnitude_max\":" + number(magnitude_max) +
+                        ",\"scalar_range\":[" + number(scalar_min) + "," + number(scalar_max) + "]" +
+                        ",\"timings\":{\"solve_ms\":" + short_number(solve_ms) +
+                        ",\"reconstruct_ms\":" + short_number(reconstruct_ms) + ",\"lines_ms\":" + short_number(lines_ms) +
+                        ",\"scalar_ms\":" + short_number(scalar_ms) + full_timing;
+  // server_ms is measured last, just before the message is handed to the transport.
+  members += ",\"server_ms\":" + short_number(milliseconds_since(r.received)) + "}" + full_difference;
+  (*r.send)(binary_message(members, arrays));
+}
+
+} // namespace tvf_tool

@@ -1,0 +1,328 @@
+// Copyright (c) 2026 The Tangent_vector_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// `tvf serve`: the field editor's server.  Boost.Beast, synchronous, one thread per
+// connection (a local tool: a handful of pages at most, and a slow full-resolution solve
+// in one page must not stall the others).  HTTP serves the bundled page; the WebSocket
+// at /ws carries the editing session (editor_session.h, doc/editor_protocol.md).
+
+#include "editor_session.h"
+#include "tool.h"
+
+#include <CGAL/Tangent_vector_fields/Eigenfield_basis.h>
+#include <CGAL/Tangent_vector_fields/Hodge_solver.h>
+#include <CGAL/Tangent_vector_fields/errors.h>
+
+#include <boost/asio/ip/tcp.hpp>
+#include <boost/beast/core.hpp>
+#include <boost/beast/http.hpp>
+#include <boost/beast/websocket.hpp>
+
+
+#include <atomic>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <thread>
+
+#ifndef TVF_EDITOR_DIST_DIR
+#define TVF_EDITOR_DIST_DIR ""
+#endif
+
+namespace tvf_tool {
+
+namespace {
+
+namespace beast = boost::beast;
+namespace http = beast::http;
+namespace websocket = beast::websocket;
+namespace asio = boost::asio;
+using tcp = asio::ip::tcp;
+
+struct Server
+{
+  std::shared_ptr<const Editor_model> model;
+  std::string web_root;
+  int max_connections = 16;
+  std::atomic<int> connections{0};
+};
+
+std::string content_type(const std::string& path)
+{
+  const std::string ext = extension(path);
+  if(ext == "html") return "text/html; charset=utf-8";
+  if(ext == "js" || ext == "mjs") return "text/javascript; charset=utf-8";
+  if(ext == "css") return "text/css; charset=utf-8";
+  if(ext == "json" || ext == "map") return "application/json";
+  if(ext == "svg") return "image/svg+xml";
+  if(ext == "png") return "image/png";
+  if(ext == "ico") return "image/x-icon";
+  return "application/octet-stream";
+}
+
+// Targets are plain relative paths of the page's files: no "..", no odd characters.
+bool safe_target(const std::string& target)
+{
+  if(target.empty() || target[0] != '/' || target.size() > 256 || target.find("..") != std::string::npos) return false;
+  for(char c : target)
+    if(!(std::isalnum(static_cast<unsigned char>(c)) || c == '/' || c == '.' || c == '_' || c == '-')) return false;
+  return true;
+}
+
+const char* missing_page =
+    "<!doctype html><title>tvf serve</title><p>The editor page was not built (npm was not found when the "
+    "project was configured), or <code>--web-root</code> does not hold it.  The WebSocket API at <code>/ws</code> "
+    "works all the same (doc/editor_protocol.md).</p>";
+
+http::response<http::string_body> answer(const http::request<http::string_body>& request, const Server& server)
+{
+  auto reply = [&request](http::status status, const std::string& type, std::string body) {
+    http::response<http::string_body> res{status, request.version()};
+    res.set(http::field::server, "tvf serve");
+    res.set(http::field::content_type, type);
+    res.set(http::field::cache_control, "no-store");
+    res.keep_alive(request.keep_alive());
+    res.body() = std::move(body);
+    res.prepare_payload();
+    return res;
+  };
+  if(request.method() != http::verb::get && request.method() != http::verb::head)
+    return reply(http::status::method_not_allowed, "text/plain", "only GET\n");
+  std::string target(request.target());
+  target = target.substr(0, target.find('?'));
+  if(target == "/") target = "/index.html";
+  if(!safe_target(target)) return reply(http::status::bad_request, "text/plain", "bad target\n");
+  // Without a page directory nothing is served from the disk (an empty root would make
+  // the target an absolute path).
+  std::ifstream in;
+  if(!server.web_root.empty() && std::filesystem::is_regular_file(server.web_root + target))
+    in.open(server.web_root + target, std::ios::binary);
+  if(!in.is_open())
+  {
+    if(target == "/index.html") return reply(http::status::ok, "text/html; charset=utf-8", missing_page);
+    return reply(http::status::not_found, "text/plain", "not found\n");
+  }
+  std::ostringstream body;
+  body << in.rdbuf();
+  auto res = reply(http::status::ok, content_type(target), body.str());
+  if(request.method() == http::verb::head) res.body().clear();
+  return res;
+}
+
+// The editing session on an upgraded connection.  Messages are read in pieces so that one
+// over the size limit can be dropped and answered, instead of closing the connection.
+void run_websocket(tcp::socket socket, const http::request<http::string_body>& upgrade, const Server& server)
+{
+  websocket::stream<tcp::socket> ws(std::move(socket));
+  ws.read_message_max(std::uint64_t(1) << 32); // our own limit is enforced below, message by message
+  ws.set_option(websocket::stream_base::decorator(
+      [](websocket::response_type& res) { res.set(http::field::server, "tvf serve"); }));
+  ws.accept(upgrade);
+  Editor_session session(server.model);
+  const Send send = [&ws](const Outgoing& message) {
+    ws.binary(message.binary);
+    ws.write(asio::buffer(message.data));
+  };
+  const std::size_t limit = server.model->limits().max_message_bytes;
+  beast::flat_buffer buffer;
+  for(;;)
+  {
+    buffer.clear();
+    std::size_t received = 0;
+    bool oversized = false;
+    do
+    {
+      received += ws.read_some(buffer, 64 * 1024);
+      if(received > limit)
+      {
+        oversized = true;
+        buffer.clear(); // drop the rest as it comes: memory stays bounded
+      }
+    } while(!ws.is_message_done());
+    if(oversized) session.refuse_oversized(received, send);
+    else if(!ws.got_text()) session.refuse_binary(received, send);
+    else session.handle_text(beast::buffers_to_string(buffer.data()), send);
+  }
+}
+
+void serve_connection(tcp::socket socket, Server& server)
+{
+  struct Count // connections are counted so that a flood of them is refused, not served
+  {
+    std::atomic<int>& n;
+    ~Count() { --n; }
+  } count{server.connections};
+  beast::flat_buffer buffer;
+  try
+  {
+    for(;;)
+    {
+      http::request_parser<http::string_body> parser;
+      parser.header_limit(16 * 1024);
+      parser.body_limit(64 * 1024);
+      beast::error_code error;
+      http::read(socket, buffer, parser, error);
+      if(error == http::error::end_of_stream || error == asio::error::eof || error == asio::error::connection_reset)
+        return;
+      if(error)
+      {
+        http::response<http::string_body> res{http::status::bad_request, 11};
+        res.set(http::field::content_type, "text/plain");
+        res.body() = "bad request: " + error.message() + "\n";
+        res.keep_alive(false);
+        res.prepare_payload();
+        http::write(socket, res, error);
+        return;
+      }
+      const http::request<http::string_body>& request = parser.get();
+      if(websocket::is_upgrade(request))
+      {
+        if(request.target() != "/ws")
+        {
+          http::response<http::string_body> res{http::status::not_found, request.version()};
+          res.keep_alive(false);
+          res.prepare_payload();
+          http::write(socket, res);
+          return;
+        }
+        return run_websocket(std::move(socket), request, server);
+      }
+      http::response<http::string_body> res = answer(request, server);
+      const bool keep_alive = res.keep_alive();
+      http::write(socket, res);
+      if(!keep_alive) return;
+    }
+  }
+  catch(const std::exception&)
+  {
+    // The page went away (or sent garbage the transport refused): only this connection ends.
+  }
+}
+
+} // namespace
+
+int serve_command(const Arguments& args)
+{
+  Command_line command(
+      "tvf serve <mesh> [--basis FILE.tvfb] [-n N] [-d D] [--port P] [--bind ADDRESS]",
+      "Starts the interactive field editor: a local web server that serves the editor page and answers\n"
+      "constraint edits with the new field (tangent vector field splines in a spectral basis: the\n"
+      "reduced solver, and the full-resolution one on request).  Open the address it prints in a browser.\n"
+      "The basis is loaded from --basis if that file exists, else computed (the N lowest eigenfields,\n"
+      "with progress on the page) and saved there, so the precomputation is done once.  Stop with Ctrl-C.");
+  command.positional("mesh", "the mesh file");
+  command.group("basis").add_options()
+    ("basis", po::value<std::string>()->value_name("FILE"), "the basis: loaded if the file exists, else computed and saved")
+    ("eigenfields,n", po::value<int>()->default_value(300)->value_name("N"), "eigenfields to compute if there is no basis file")
+    ("size,d", po::value<int>()->value_name("D"), "basis size a new session starts with (default: all)");
+  command.group("server").add_options()
+    ("port", po::value<int>()->default_value(8080)->value_name("P"), "TCP port (0: any free port)")
+    ("bind", po::value<std::string>()->default_value("127.0.0.1")->value_name("ADDRESS"),
+     "address to listen on (the default serves this machine only)")
+    ("web-root", po::value<std::string>()->value_name("DIR"), "directory of the page (default: the one built with tvf)")
+    ("max-connections", po::value<int>()->default_value(16)->value_name("N"), "connections served at once");
+  if(!command.parse(args)) return 0; // --help
+  const int port = command.get<int>("port");
+  if(port < 0 || port > 65535) throw Usage_error("'--port' must lie in [0, 65535]");
+  const int eigenfields = command.get<int>("eigenfields");
+  if(eigenfields <= 0) throw Usage_error("'--eigenfields' must be positive");
+  const int size = command.has("size") ? command.get<int>("size") : 0;
+  if(command.has("size") && size <= 0) throw Usage_error("'--size' must be positive");
+  const int max_connections = command.get<int>("max-connections");
+  if(max_connections <= 0) throw Usage_error("'--max-connections' must be positive");
+  std::string basis_path = command.has("basis") ? command.get<std::string>("basis") : std::string();
+  if(!basis_path.empty() && extension(basis_path) != "tvfb")
+    throw Usage_error("the basis file '" + basis_path + "' should end in .tvfb");
+  beast::error_code error;
+  const asio::ip::address address = asio::ip::make_address(command.get<std::string>("bind"), error);
+  if(error) throw Usage_error("'--bind': '" + command.get<std::string>("bind") + "' is not an IP address");
+
+  const Tool_mesh mesh(command.positional_value(), command.mollify());
+  if(!basis_path.empty() && !std::ifstream(basis_path) && eigenfields > 2 * mesh.number_of_faces())
+    throw Tool_error("the mesh has only " + std::to_string(2 * mesh.number_of_faces()) + " eigenfields");
+  auto hodge = std::make_shared<TVF::Hodge_solver>(mesh.shared_matrices());
+  std::string name = mesh.path();
+  name = name.substr(name.find_last_of('/') + 1);
+  auto model = std::make_shared<Editor_model>(mesh.shared_matrices(), hodge, name, mesh.bounding_box_diagonal(), size,
+                                              Editor_limits());
+
+  Server server;
+  server.model = model;
+  server.web_root = command.has("web-root") ? command.get<std::string>("web-root") : std::string(TVF_EDITOR_DIST_DIR);
+  server.max_connections = max_connections;
+  if(!std::ifstream(server.web_root + "/index.html"))
+    std::fprintf(stderr, "tvf: warning: no editor page in '%s' (built with npm; see --web-root)\n",
+                 server.web_root.c_str());
+
+  asio::io_context io;
+  tcp::acceptor acceptor(io);
+  try
+  {
+    const tcp::endpoint endpoint(address, static_cast<unsigned short>(port));
+    acceptor.open(endpoint.protocol());
+    acceptor.set_option(asio::socket_base::reuse_address(true));
+    acceptor.bind(endpoint);
+    acceptor.listen();
+  }
+  catch(const boost::system::system_error& e)
+  {
+    throw Tool_error("cannot listen on " + command.get<std::string>("bind") + ":" + std::to_string(port) + ": " +
+                     e.code().message());
+  }
+
+  // The basis: loaded or computed in the background, so that the page can show progress.
+  const bool quiet = command.quiet();
+  std::thread([model, hodge, basis_path, eigenfields, quiet] {
+    try
+    {
+      std::shared_ptr<const TVF::Eigenfield_basis> basis;
+      if(!basis_path.empty() && std::ifstream(basis_path))
+      {
+        model->set_progress("loading the basis " + basis_path, 0);
+        basis = std::make_shared<const TVF::Eigenfield_basis>(TVF::Eigenfield_basis::load(hodge, basis_path));
+      }
+      else
+      {
+        TVF::Basis_options options;
+        options.progress = [&model](const TVF::Spectral_progress& p) {
+          model->set_progress("computing the basis: " + p.stage, p.fraction);
+        };
+        basis = std::make_shared<const TVF::Eigenfield_basis>(hodge, TVF::Basis_request::lowest(eigenfields), options);
+        if(!basis_path.empty())
+        {
+          model->set_progress("saving the basis to " + basis_path, 1);
+          basis->save(basis_path);
+        }
+      }
+      model->set_basis(basis);
+      if(!quiet) std::printf("basis ready: %d eigenfields\n", basis->size()), std::fflush(stdout);
+    }
+    catch(const std::exception& e)
+    {
+      model->set_failure(one_line(e.what()));
+      std::fprintf(stderr, "tvf: error: the basis: %s\n", one_line(e.what()).c_str());
+    }
+  }).detach();
+
+  const tcp::endpoint bound = acceptor.local_endpoint();
+  // Always printed (also with --quiet): scripts and tests read the port from it.
+  std::printf("listening on http://%s:%d/\n", bound.address().to_string().c_str(), int(bound.port()));
+  std::fflush(stdout);
+  for(;;)
+  {
+    tcp::socket socket(io);
+    acceptor.accept(socket, error);
+    if(error) continue;
+    if(server.connections.load() >= server.max_connections)
+    {
+      socket.close(error); // refused: too many pages at once
+      continue;
+    }
+    ++server.connections;
+    std::thread([s = std::move(socket), &server]() mutable { serve_connection(std::move(s), server); }).detach();
+  }
+}
+
+} // namespace tvf_tool

@@ -1,0 +1,429 @@
+// Copyright (c) 2026 The Tangent_vector_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The editor's server (`tvf serve`), driven over real sockets: the session honours its
+// constraints, and malformed and hostile messages (huge, truncated, NaN, out-of-range
+// indices, deep nesting, binary, broken frames, bad HTTP) each get an error while the
+// server stays up.  The server runs as its own process, as users run it.
+
+#include <gtest/gtest.h>
+
+#include <boost/asio/connect.hpp>
+#include <boost/asio/ip/tcp.hpp>
+#include <boost/asio/read_until.hpp>
+#include <boost/asio/streambuf.hpp>
+#include <boost/asio/write.hpp>
+#include <boost/beast/core.hpp>
+#include <boost/beast/http.hpp>
+#include <boost/beast/websocket.hpp>
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
+
+#include <array>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <vector>
+
+namespace {
+
+namespace beast = boost::beast;
+namespace http = beast::http;
+namespace websocket = beast::websocket;
+namespace asio = boost::asio;
+using tcp = asio::ip::tcp;
+typedef boost::property_tree::ptree Tree;
+
+// --- the server process ---------------------------------------------------------------------------
+
+class Server_process
+{
+public:
+  Server_process(const std::vector<std::string>& args)
+  {
+    int out[2];
+    if(pipe(out) != 0) throw std::runtime_error("pipe");
+    pid_ = fork();
+    if(pid_ == 0)
+    {
+      dup2(out[1], STDOUT_FILENO);
+      close(out[0]);
+      std::vector<char*> argv;
+      for(const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+      argv.push_back(nullptr);
+      execv(argv[0], argv.data());
+      _exit(127);
+    }
+    close(out[1]);
+    FILE* in = fdopen(out[0], "r");
+    char line[512];
+    while(std::fgets(line, sizeof line, in))
+    {
+      int p = 0;
+      if(std::sscanf(line, "listening on http://127.0.0.1:%d/", &p) == 1)
+      {
+        port_ = p;
+        break;
+      }
+    }
+    stdout_ = in; // kept open so the server's later prints do not hit a closed pipe
+    if(port_ == 0) throw std::runtime_error("the server did not start");
+  }
+  ~Server_process()
+  {
+    kill(pid_, SIGTERM);
+    waitpid(pid_, nullptr, 0);
+    if(stdout_) std::fclose(stdout_);
+  }
+  int port() const { return port_; }
+  bool running() const { return waitpid(pid_, nullptr, WNOHANG) == 0; }
+
+private:
+  pid_t pid_ = -1;
+  int port_ = 0;
+  FILE* stdout_ = nullptr;
+};
+
+// --- a WebSocket client ---------------------------------------------------------------------------
+
+struct Message
+{
+  bool binary = false;
+  Tree json; // text message, or the header of a binary one
+  std::map<std::string, std::vector<float>> floats;
+  std::map<std::string, std::vector<std::uint32_t>> integers;
+  std::string type() const { return json.get<std::string>("type", ""); }
+};
+
+Message decode(bool binary, const std::string& data)
+{
+  Message m;
+  m.binary = binary;
+  std::string header = data;
+  std::size_t offset = 0;
+  if(binary)
+  {
+    std::uint32_t n = 0;
+    std::memcpy(&n, data.data(), 4);
+    header = data.substr(4, n);
+    offset = (4 + n + 3) / 4 * 4;
+  }
+  std::istringstream in(header);
+  boost::property_tree::read_json(in, m.json);
+  if(binary)
+    for(const auto& a : m.json.get_child("arrays"))
+    {
+      const std::string name = a.second.get<std::string>("name");
+      const std::size_t length = a.second.get<std::size_t>("length");
+      if(offset + 4 * length > data.size()) throw std::runtime_error("array past the end of the message");
+      if(a.second.get<std::string>("type") == "float32")
+      {
+        std::vector<float>& v = m.floats[name];
+        v.resize(length);
+        std::memcpy(v.data(), data.data() + offset, 4 * length);
+      }
+      else
+      {
+        std::vector<std::uint32_t>& v = m.integers[name];
+        v.resize(length);
+        std::memcpy(v.data(), data.data() + offset, 4 * length);
+      }
+      offset += 4 * length;
+    }
+  return m;
+}
+
+class Client
+{
+public:
+  explicit Client(int port) : ws_(io_)
+  {
+    tcp::resolver resolver(io_);
+    asio::connect(ws_.next_layer(), resolver.resolve("127.0.0.1", std::to_string(port)));
+    ws_.read_message_max(std::uint64_t(1) << 30);
+    ws_.handshake("127.0.0.1", "/ws");
+  }
+  void send(const std::string& text)
+  {
+    ws_.text(true);
+    ws_.write(asio::buffer(text));
+  }
+  void send_binary(const std::string& data)
+  {
+    ws_.binary(true);
+    ws_.write(asio::buffer(data));
+  }
+  Message receive()
+  {
+    beast::flat_buffer buffer;
+    ws_.read(buffer);
+    return decode(ws_.got_binary(), beast::buffers_to_string(buffer.data()));
+  }
+  // The next message of `type`, skipping progress and status messages.
+  Message expect(const std::string& type)
+  {
+    for(;;)
+    {
+      Message m = receive();
+      if(m.type() == "progress" || m.type() == "status") continue;
+      EXPECT_EQ(m.type(), type) << (m.type() == "error" ? m.json.get<std::string>("message") : "");
+      return m;
+    }
+  }
+  std::string expect_error()
+  {
+    Message m = expect("error");
+    return m.json.get<std::string>("message", "");
+  }
+  websocket::stream<tcp::socket>& stream() { return ws_; }
+
+private:
+  asio::io_context io_;
+  websocket::stream<tcp::socket> ws_;
+};
+
+std::array<double, 3> face_vector(const Message& field, int f)
+{
+  const std::vector<float>& v = field.floats.at("vectors");
+  return {{v[3 * f], v[3 * f + 1], v[3 * f + 2]}};
+}
+
+double distance(const std::array<double, 3>& a, const std::array<double, 3>& b)
+{
+  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+// A unit vector along the first edge of face f of the mesh message (tangent to the face).
+std::array<double, 3> tangent(const Message& mesh, int f)
+{
+  const auto& p = mesh.floats.at("positions");
+  const auto& t = mesh.integers.at("triangles");
+  std::array<double, 3> e;
+  for(int k = 0; k < 3; ++k) e[k] = p[3 * t[3 * f + 1] + k] - p[3 * t[3 * f] + k];
+  const double n = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+  for(double& x : e) x /= n;
+  return e;
+}
+
+std::string vector_constraint(int face, const std::array<double, 3>& v)
+{
+  std::ostringstream s;
+  s.precision(17);
+  s << "{\"type\":\"vector\",\"face\":" << face << ",\"vector\":[" << v[0] << "," << v[1] << "," << v[2] << "]}";
+  return s.str();
+}
+
+std::string sphere_path() { return std::string(TVF_CGAL_DATA_DIR) + "/meshes/sphere.off"; }
+
+class Server_test : public ::testing::Test
+{
+protected:
+  static void SetUpTestSuite() { server = new Server_process({TVF_TOOL, "serve", sphere_path(), "-n", "60", "--port", "0"}); }
+  static void TearDownTestSuite() { delete server; }
+  static Server_process* server;
+
+  // A session after hello: the info, mesh and first field.
+  struct Session
+  {
+    Client client;
+    Message info, mesh, field;
+    explicit Session(int port) : client(port)
+    {
+      client.send("{\"type\":\"hello\",\"request\":1}");
+      info = client.expect("info");
+      mesh = client.expect("mesh");
+      field = client.expect("field");
+    }
+  };
+};
+Server_process* Server_test::server = nullptr;
+
+TEST_F(Server_test, hello_sends_mesh_and_field)
+{
+  Session s(server->port());
+  const int nf = s.info.json.get<int>("mesh.faces"), nv = s.info.json.get<int>("mesh.vertices");
+  EXPECT_EQ(nf, 320);
+  EXPECT_EQ(s.info.json.get<int>("basis.available"), 60);
+  EXPECT_EQ(s.mesh.floats.at("positions").size(), 3u * nv);
+  EXPECT_EQ(s.mesh.integers.at("triangles").size(), 3u * nf);
+  EXPECT_EQ(s.mesh.integers.at("face_edges").size(), 3u * nf);
+  EXPECT_EQ(s.mesh.integers.at("boundary_edges").size(), 0u); // a closed sphere
+  ASSERT_EQ(s.field.floats.at("vectors").size(), 3u * nf);
+  EXPECT_EQ(s.field.json.get<int>("request"), 1);
+  for(float x : s.field.floats.at("vectors")) EXPECT_EQ(x, 0.f); // no constraints: the zero field
+}
+
+TEST_F(Server_test, field_honours_constraints_and_edits)
+{
+  Session s(server->port());
+  const int f = 17;
+  const std::array<double, 3> v = tangent(s.mesh, f);
+  s.client.send("{\"type\":\"add\",\"request\":5,\"constraint\":" + vector_constraint(f, v) + "}");
+  const Message added = s.client.expect("added");
+  const int id = added.json.get<int>("id");
+  EXPECT_EQ(added.json.get<int>("request"), 5);
+  Message field = s.client.expect("field");
+  EXPECT_EQ(field.json.get<int>("request"), 5);
+  // float32 transfer: 1e-6 relative to a unit vector.
+  EXPECT_LT(distance(face_vector(field, f), v), 1e-6);
+  EXPECT_LT(field.json.get<double>("report.residual"), 1e-9);
+  for(const char* t : {"solve_ms", "reconstruct_ms", "lines_ms", "server_ms"})
+    EXPECT_GE(field.json.get<double>(std::string("timings.") + t), 0.0) << t;
+  EXPECT_GT(field.floats.at("lines").size(), 0u); // fur by default
+
+  // A changed value (the fast path) moves the field at the face with it.
+  const std::array<double, 3> w = {{-2 * v[0], -2 * v[1], -2 * v[2]}};
+  s.client.send("{\"type\":\"change\",\"id\":" + std::to_string(id) + ",\"constraint\":" + vector_constraint(f, w) + "}");
+  field = s.client.expect("field");
+  EXPECT_LT(distance(face_vector(field, f), w), 2e-6);
+
+  // Display: divergence as a scalar per vertex, no lines.
+  s.client.send("{\"type\":\"set_display\",\"scalar\":\"divergence\",\"lines\":\"none\"}");
+  field = s.client.expect("field");
+  EXPECT_EQ(field.floats.at("scalar").size(), s.mesh.floats.at("positions").size() / 3);
+  EXPECT_EQ(field.floats.count("lines"), 0u);
+
+  // A source: the divergence at the point is met (vertex values interpolate linearly).
+  s.client.send("{\"type\":\"add\",\"constraint\":{\"type\":\"divergence\",\"face\":100,\"barycentric\":[0.2,0.3,0.5],"
+                "\"vertices\":[" +
+                std::to_string(s.mesh.integers.at("triangles")[300]) + "," +
+                std::to_string(s.mesh.integers.at("triangles")[301]) + "," +
+                std::to_string(s.mesh.integers.at("triangles")[302]) + "],\"value\":3}}");
+  s.client.expect("added");
+  field = s.client.expect("field");
+  const auto& t = s.mesh.integers.at("triangles");
+  const auto& div = field.floats.at("scalar");
+  EXPECT_NEAR(0.2 * div[t[300]] + 0.3 * div[t[301]] + 0.5 * div[t[302]], 3.0, 1e-4);
+
+  // Full resolution: the same constraints met, and its distance to the reduced solution reported.
+  s.client.send("{\"type\":\"set_solver\",\"solver\":\"full\"}");
+  field = s.client.expect("field");
+  EXPECT_EQ(field.json.get<std::string>("solver"), "full");
+  EXPECT_LT(distance(face_vector(field, f), w), 2e-6);
+  const double difference = field.json.get<double>("difference");
+  EXPECT_GT(difference, 0.0);
+  EXPECT_LT(difference, 1.0);
+
+  // Save: the command line's constraint file, which load takes back.
+  s.client.send("{\"type\":\"save\"}");
+  Message saved = s.client.expect("constraints");
+  EXPECT_EQ(saved.json.get_child("file.constraints").size(), 2u);
+  std::ostringstream file;
+  boost::property_tree::write_json(file, saved.json.get_child("file"), false);
+  s.client.send("{\"type\":\"clear\"}");
+  field = s.client.expect("field");
+  EXPECT_EQ(field.json.get_child("ids").size(), 0u);
+  s.client.send("{\"type\":\"set_solver\",\"solver\":\"reduced\"}");
+  s.client.expect("field");
+  // write_json quotes numbers; the reader takes them as the file format's numbers.
+  s.client.send("{\"type\":\"load\",\"file\":" + file.str() + "}");
+  EXPECT_EQ(s.client.expect("loaded").json.get_child("ids").size(), 2u);
+  field = s.client.expect("field");
+  EXPECT_LT(distance(face_vector(field, f), w), 2e-6);
+
+  // Removing the vector constraint leaves the source only: the face vector changes.
+  s.client.send("{\"type\":\"remove\",\"id\":" + std::to_string(field.json.get_child("ids").front().second.get_value<int>()) + "}");
+  field = s.client.expect("field");
+  EXPECT_GT(distance(face_vector(field, f), w), 0.1);
+}
+
+TEST_F(Server_test, hostile_messages_get_errors_and_the_server_stays_up)
+{
+  Session s(server->port());
+  const int nf = s.info.json.get<int>("mesh.faces");
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {std::string(2 << 20, ' '), "exceeds the limit"},                     // huge (2 MiB)
+      {"{\"type\":\"add\",\"constraint\":{\"type\":\"vector\",\"face\":1,", "not JSON"}, // truncated
+      {"{\"type\":\"add\",\"constraint\":{\"type\":\"vector\",\"face\":1,\"vector\":[NaN,0,0]}}", "not JSON"},
+      {"{\"type\":\"add\",\"constraint\":{\"type\":\"vector\",\"face\":1,\"vector\":[1e999,0,0]}}", "finite"},
+      {"{\"type\":\"add\",\"constraint\":{\"type\":\"vector\",\"face\":" + std::to_string(nf) + ",\"vector\":[1,0,0]}}",
+       "out of range"},
+      {"{\"type\":\"add\",\"constraint\":{\"type\":\"vector\",\"face\":-1,\"vector\":[1,0,0]}}", "index"},
+      {"{\"type\":\"add\",\"constraint\":{\"type\":\"divergence\",\"vertex\":99999999,\"value\":1}}", "range"},
+      {"{\"type\":\"add\",\"constraint\":{\"type\":\"curl\",\"edge\":4000000000,\"value\":1}}", "index"},
+      {"{\"type\":\"add\",\"constraint\":{\"type\":\"vector\",\"face\":3,\"vector\":[1,0]}}", "3 numbers"},
+      {"{\"type\":\"add\",\"constraint\":{\"type\":\"warp\",\"face\":3}}", "unknown type"},
+      {"{\"type\":\"add\",\"constraint\":5}", "not a JSON object"},
+      {"{\"type\":\"add\"}", "missing \"constraint\""},
+      {"{\"type\":\"change\",\"id\":12345,\"constraint\":{\"type\":\"vector\",\"face\":1,\"vector\":[1,0,0]}}",
+       "no constraint with id"},
+      {"{\"type\":\"remove\",\"id\":\"abc\"}", "must be a number"},
+      {"{\"type\":\"remove\",\"id\":1.5}", "integer"},
+      {"{\"type\":\"set_omega\",\"omega\":-1}", "omega"},
+      {"{\"type\":\"set_basis_size\",\"size\":100000}", "size"},
+      {"{\"type\":\"set_display\",\"strokes\":1e9}", "strokes"},
+      {"{\"type\":\"set_display\",\"lines\":{\"a\":1}}", "must be a string"},
+      {"{\"type\":\"set_solver\",\"solver\":\"quantum\"}", "solver"},
+      {"{\"type\":\"load\",\"file\":{\"constraints\":[{\"type\":\"vector\",\"face\":1,\"vector\":[1,0,0]},"
+       "{\"type\":\"vector\",\"face\":1,\"vector\":[0,1,0]}]}}",
+       ""}, // two different vectors in one face: infeasible
+      {"{\"type\":\"frobnicate\"}", "unknown message type"},
+      {"{\"request\":3}", "missing \"type\""},
+      {"[1,2,3]", "JSON object"},
+      {"42", "JSON object"},
+      {"", "not JSON"},
+      {std::string(100000, '[') + std::string(100000, ']'), "nested deeper"},
+      {"{\"type\":\"hello\",\"request\":-4}", "request"},
+  };
+  for(const auto& c : cases)
+  {
+    s.client.send(c.first);
+    const std::string message = s.client.expect_error();
+    EXPECT_NE(message.find(c.second), std::string::npos) << c.first.substr(0, 80) << " -> " << message;
+    s.client.send("{\"type\":\"ping\",\"request\":9}");
+    EXPECT_EQ(s.client.expect("pong").json.get<int>("request"), 9);
+  }
+  s.client.send_binary(std::string(1000, '\x01'));
+  EXPECT_NE(s.client.expect_error().find("binary"), std::string::npos);
+
+  // The session is unchanged by all that: no constraints were added.
+  s.client.send("{\"type\":\"save\"}");
+  EXPECT_EQ(s.client.expect("constraints").json.get_child("file.constraints").size(), 0u);
+
+  // Transport-level abuse ends only its own connection.
+  {
+    Client broken(server->port()); // invalid UTF-8 in a text message: Beast closes the connection
+    broken.send(std::string("{\"type\":\"\xff\xfe\"}"));
+    beast::flat_buffer buffer;
+    beast::error_code error;
+    broken.stream().read(buffer, error);
+    EXPECT_TRUE(error);
+  }
+  {
+    Client truncated(server->port()); // a frame header announcing 1000 bytes, then the socket closes
+    const unsigned char frame[] = {0x81, 0xFE, 0x03, 0xE8, 1, 2, 3, 4, 'a', 'b'};
+    asio::write(truncated.stream().next_layer(), asio::buffer(frame, sizeof frame));
+    truncated.stream().next_layer().close();
+  }
+  for(const std::string& raw : std::vector<std::string>{"GARBAGE\r\n\r\n", "GET /../etc/passwd HTTP/1.1\r\nHost: x\r\n\r\n",
+                                "GET / HTTP/1.1\r\nX-Big: " + std::string(100000, 'a') + "\r\n\r\n",
+                                "POST / HTTP/1.1\r\nHost: x\r\nContent-Length: 5\r\n\r\nhello"})
+  {
+    asio::io_context io;
+    tcp::socket socket(io);
+    socket.connect(tcp::endpoint(asio::ip::make_address("127.0.0.1"), server->port()));
+    beast::error_code error;
+    asio::write(socket, asio::buffer(raw), error);
+    asio::streambuf reply;
+    asio::read_until(socket, reply, "\r\n", error);
+    std::istream in(&reply);
+    std::string status;
+    std::getline(in, status);
+    EXPECT_TRUE(status.find(" 400 ") != std::string::npos || status.find(" 405 ") != std::string::npos)
+        << raw.substr(0, 40) << " -> " << status;
+  }
+
+  EXPECT_TRUE(server->running());
+  Session again(server->port()); // a new session still works
+  EXPECT_EQ(again.info.json.get<int>("mesh.faces"), nf);
+  s.client.send("{\"type\":\"ping\"}");
+  s.client.expect("pong");
+}
+
+} // namespace
