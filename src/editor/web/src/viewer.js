@@ -127,8 +127,9 @@ export class Viewer {
     geometry.computeBoundingSphere();
     geometry.computeBoundingBox();
     // Pushed back in depth so that lines and handles lying on the surface stay visible.
-    const material = new THREE.MeshStandardMaterial({
-      vertexColors: true, side: THREE.DoubleSide, roughness: 0.8, metalness: 0,
+    // Lambert: half the cost of the physically based material in software rendering.
+    const material = new THREE.MeshLambertMaterial({
+      vertexColors: true, side: THREE.DoubleSide,
       polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1,
     });
     if (this.surface) {
@@ -142,19 +143,19 @@ export class Viewer {
     this.faceNormals = faceNormals;
     this.centroids = centroids;
     this.colourUniform();
-    this.fitCamera(geometry.boundingBox);
+    this.fitCamera(geometry.boundingSphere);
   }
 
-  fitCamera(box) {
-    const centre = box.getCenter(new THREE.Vector3());
-    const radius = 0.5 * box.getSize(new THREE.Vector3()).length();
-    this.diagonal = 2 * radius;
-    const distance = (1.15 * radius) / Math.sin(THREE.MathUtils.degToRad(this.camera.fov / 2));
+  // The whole mesh in view, seen from the front and a little from above and the right.
+  fitCamera(sphere) {
+    const { center, radius } = sphere;
+    this.diagonal = this.surface.geometry.boundingBox.getSize(new THREE.Vector3()).length();
+    const distance = (1.3 * radius) / Math.sin(THREE.MathUtils.degToRad(this.camera.fov / 2));
     this.camera.near = radius * 0.01;
     this.camera.far = distance + 10 * radius;
-    this.camera.position.copy(centre).add(new THREE.Vector3(0.25, 0.3, 1).normalize().multiplyScalar(distance));
+    this.camera.position.copy(center).add(new THREE.Vector3(0.25, 0.3, 1).normalize().multiplyScalar(distance));
     this.camera.updateProjectionMatrix();
-    this.controls.target.copy(centre);
+    this.controls.target.copy(center);
     this.controls.update();
     this.requestRender();
   }
