@@ -4,6 +4,9 @@ import { decodeBinary, RequestQueue } from './protocol.js';
 import { Handle, drawHandle } from './handles.js';
 import { latencyEntry } from './latency.js';
 
+// How long the render loop waits for a field before drawing without it.
+const HOLD_FRAMES_MS = 40;
+
 export class Editor {
   // viewer: a Viewer; latency: a LatencyPanel; ui: callbacks the panel provides
   // (status, error, progress, info, field, selection, constraints).
@@ -20,6 +23,7 @@ export class Editor {
     this.queue = new RequestQueue((message) => {
       const sentAt = performance.now();
       this.socket.send(JSON.stringify(message));
+      this.viewer.holdFrames(sentAt + HOLD_FRAMES_MS);
       return sentAt;
     });
     this.ready = new Promise((resolve, reject) => {
@@ -113,7 +117,7 @@ export class Editor {
     else if ((colour === 'divergence' || colour === 'curl') && arrays.scalar) {
       this.viewer.colourByScalar(arrays.scalar, header.scalar_range || [0, 0]);
     } else this.viewer.colourUniform();
-    this.viewer.setLines(arrays.lines, colour === 'magnitude');
+    this.viewer.setLines(arrays.lines, colour === 'magnitude', this.display.lines === 'fur');
   }
 
   // Handles whose constraint the server no longer has go away; the others are confirmed.
@@ -123,6 +127,7 @@ export class Editor {
       if (h.id !== null && !present.has(h.id)) this.dispose(h);
     }
     this.ui.constraints();
+    if (this.selected) this.ui.selection(this.selected); // its id may just have arrived
   }
 
   dispose(handle) {
@@ -215,16 +220,24 @@ export class Editor {
     return this.queue.push({ build: () => ({ type: 'save' }) });
   }
 
+  // A refused setting leaves the session as it was: the panel shows the last field's again.
+  restoreSettings() {
+    if (this.field) this.ui.settings(this.field.header);
+  }
+
   setOmega(omega) {
-    return this.queue.push({ key: 'omega', build: () => ({ type: 'set_omega', omega }) });
+    return this.queue.push({ key: 'omega', build: () => ({ type: 'set_omega', omega }),
+      onError: () => this.restoreSettings() });
   }
 
   setBasisSize(size) {
-    return this.queue.push({ key: 'basis', build: () => ({ type: 'set_basis_size', size }) });
+    return this.queue.push({ key: 'basis', build: () => ({ type: 'set_basis_size', size }),
+      onError: () => this.restoreSettings() });
   }
 
   setSolver(solver) {
-    return this.queue.push({ key: 'solver', build: () => ({ type: 'set_solver', solver }) });
+    return this.queue.push({ key: 'solver', build: () => ({ type: 'set_solver', solver }),
+      onError: () => this.restoreSettings() });
   }
 
   // changes: some of lines, strokes, length, separation, colour.  The server computes what

@@ -96,9 +96,10 @@ export function drawHandle(handle, viewer, selected) {
   group.clear();
   const size = viewer.diagonal;
   const c = handle.constraint;
-  const material = new THREE.MeshStandardMaterial({
-    color: COLOURS[handle.colourName()], roughness: 0.5, metalness: 0,
-    emissive: selected ? 0x777777 : 0x000000,
+  // Partly self-lit, so that handles stand out on dark colour maps; brighter when selected.
+  const colour = new THREE.Color(COLOURS[handle.colourName()]);
+  const material = new THREE.MeshLambertMaterial({
+    color: colour, emissive: selected ? new THREE.Color(0x888888) : colour.clone().multiplyScalar(0.45),
   });
   const place = placeOf(handle, viewer);
   // Lifted off the surface so that the handle is not half buried in it.

@@ -44,7 +44,7 @@ export class RequestQueue {
   // answer: the field header for field answers (`answer` holds an `added`/`loaded` message),
   // the text answer otherwise.
   push(entry) {
-    return new Promise((resolve, reject) => {
+    const promise = new Promise((resolve, reject) => {
       const waiter = { resolve, reject };
       if (entry.key !== undefined) {
         const same = this.waiting.find((e) => e.key === entry.key);
@@ -57,6 +57,10 @@ export class RequestQueue {
       this.waiting.push({ ...entry, waiters: [waiter] });
       this.pump();
     });
+    // Errors reach the user through the status line; a caller that does not wait for the
+    // answer must not turn them into unhandled rejections.
+    promise.catch(() => {});
+    return promise;
   }
 
   busy() {

@@ -50,7 +50,7 @@ export class Panel {
       tools.strength = Math.pow(10, Number(strength.value));
       $('strength-value').textContent = number(tools.strength);
     };
-    strength.value = String(Math.log10(5));
+    strength.value = '0'; // 1: divergence and curl are dimensionless when vectors are lengths
     showStrength();
     strength.addEventListener('input', () => {
       showStrength();
@@ -153,6 +153,13 @@ export class Panel {
     this.showLineControls(d.lines);
     $('progress-row').hidden = true;
     this.status('basis ready; loading the mesh');
+  }
+
+  // The settings a field was solved with, back in their controls.
+  settings(header) {
+    $('basis-size').value = String(header.basis_size);
+    this.showOmega(header.omega);
+    this.showSolver(header.solver);
   }
 
   showOmega(omega) {

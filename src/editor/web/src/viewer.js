@@ -6,11 +6,23 @@ import { VIRIDIS, COOL_WARM, colourAt } from './colormap.js';
 
 const GREY = [0.55, 0.55, 0.55];
 
+// Whether WebGL runs on a software rasterizer (headless browsers, machines without a GPU).
+function softwareRendering() {
+  const gl = document.createElement('canvas').getContext('webgl2');
+  if (!gl) return false;
+  const debug = gl.getExtension('WEBGL_debug_renderer_info');
+  const name = String(gl.getParameter(debug ? debug.UNMASKED_RENDERER_WEBGL : gl.RENDERER));
+  gl.getExtension('WEBGL_lose_context')?.loseContext();
+  return /swiftshader|llvmpipe|software/i.test(name);
+}
+
 export class Viewer {
   constructor(canvas) {
     this.canvas = canvas;
-    this.renderer = new THREE.WebGLRenderer({ canvas, antialias: true });
-    this.renderer.setPixelRatio(window.devicePixelRatio || 1);
+    this.software = softwareRendering();
+    // Multisampling costs software rasterizers about 40% of a frame; GPUs hardly notice it.
+    this.renderer = new THREE.WebGLRenderer({ canvas, antialias: !this.software });
+    this.renderer.setPixelRatio(Math.min(window.devicePixelRatio || 1, 2));
     this.scene = new THREE.Scene();
     this.scene.background = new THREE.Color(0xeef0f3);
     this.camera = new THREE.PerspectiveCamera(35, 1, 0.01, 100);
@@ -33,6 +45,7 @@ export class Viewer {
     this.scene.add(this.lines);
 
     this.dirty = true;
+    this.holdUntil = 0;
     this.frames = 0;
     this.fps = 0;
     this.frameWindowStart = performance.now();
@@ -40,7 +53,7 @@ export class Viewer {
     this.resize();
     const loop = () => {
       requestAnimationFrame(loop);
-      if (this.dirty) this.renderNow();
+      if (this.dirty && performance.now() >= this.holdUntil) this.renderNow();
       this.updateFps();
     };
     requestAnimationFrame(loop);
@@ -58,6 +71,13 @@ export class Viewer {
 
   requestRender() {
     this.dirty = true;
+  }
+
+  // No frame before time t unless renderNow() is called: while a field is on its way, a
+  // frame that only moves a handle would delay the field's own frame (a frame may cost tens
+  // of milliseconds with software rendering).
+  holdFrames(t) {
+    this.holdUntil = t;
   }
 
   // Renders at once; the caller may then call finish() to wait for the GPU.
@@ -202,19 +222,18 @@ export class Viewer {
     this.requestRender();
   }
 
-  // lines: 6 floats per segment.  Each segment fades from its tail to its head, which shows
-  // the field's direction even on short fur strokes.
-  setLines(lines, light) {
+  // lines: 6 floats per segment; light: white lines (on dark colours) rather than black.
+  // Fur strokes fade in from their tail to their head, which shows the field's direction;
+  // a stroke is a run of segments where each starts at the end of the previous one.
+  setLines(lines, light, fade) {
     const geometry = new THREE.BufferGeometry();
     if (lines && lines.length > 0) {
       geometry.setAttribute('position', new THREE.BufferAttribute(lines, 3));
       const head = light ? 1 : 0.02;
-      const tail = light ? 0.35 : 0.6;
+      const tail = light ? 0.3 : 0.65;
       const colours = new Float32Array(lines.length);
-      for (let i = 0; i < colours.length; i += 6) {
-        colours.fill(tail, i, i + 3);
-        colours.fill(head, i + 3, i + 6);
-      }
+      if (fade) fadeStrokes(lines, colours, tail, head);
+      else colours.fill(light ? 0.9 : 0.08);
       geometry.setAttribute('color', new THREE.BufferAttribute(colours, 3));
     }
     this.lines.geometry.dispose();
@@ -272,5 +291,29 @@ export class Viewer {
 
   vertexPosition(v) {
     return new THREE.Vector3().fromArray(this.mesh.positions, 3 * v);
+  }
+}
+
+// Grey levels from tail to head along each stroke, by arc length.
+function fadeStrokes(lines, colours, tail, head) {
+  const segments = lines.length / 6;
+  const length = (i) => Math.hypot(lines[6 * i + 3] - lines[6 * i], lines[6 * i + 4] - lines[6 * i + 1],
+    lines[6 * i + 5] - lines[6 * i + 2]);
+  const joined = (i) => lines[6 * i] === lines[6 * i - 3] && lines[6 * i + 1] === lines[6 * i - 2] &&
+    lines[6 * i + 2] === lines[6 * i - 1];
+  let first = 0;
+  while (first < segments) {
+    let last = first + 1;
+    let total = length(first);
+    while (last < segments && joined(last)) total += length(last++);
+    let along = 0;
+    for (let i = first; i < last; ++i) {
+      const a = total > 0 ? along / total : 0;
+      along += length(i);
+      const b = total > 0 ? along / total : 1;
+      colours.fill(tail + (head - tail) * a, 6 * i, 6 * i + 3);
+      colours.fill(tail + (head - tail) * b, 6 * i + 3, 6 * i + 6);
+    }
+    first = last;
   }
 }
