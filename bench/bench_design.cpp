@@ -15,6 +15,9 @@
 // Usage: bench_design [data-dir] [--meshes rocker,bunny,armadillo] [--sizes 50,100,...]
 //                     [--cache DIR] (saves / loads bases there)
 //                     [--chart FILE.svg] (error against time per edit, one curve per mesh and constraint set)
+//        bench_design [data-dir] --write-meshes DIR [--meshes ...]: writes the benchmark meshes (DIR/<mesh>.off,
+//                     as subdivided here) and their 30 table constraints (DIR/<mesh>-constraints.json) for
+//                     `tvf serve` and bench/bench_editor.mjs, then stops.
 
 
 #include "bench_meshes.h"
@@ -23,6 +26,7 @@
 #include <CGAL/Tangent_vector_fields/Full_spline_solver.h>
 #include <CGAL/Tangent_vector_fields/Reduced_spline_solver.h>
 #include <CGAL/Tangent_vector_fields/Soft_field_design.h>
+#include <CGAL/Tangent_vector_fields/constraint_file_io.h>
 #include <CGAL/Tangent_vector_fields/svg_chart.h>
 
 #include <algorithm>
@@ -48,9 +52,10 @@ struct Source
   int subdivisions;
 };
 
-std::shared_ptr<TVF::Hodge_solver> load(const std::string& dir, const Source& s, int& faces)
+std::shared_ptr<TVF::Hodge_solver> load(const std::string& dir, const Source& s, int& faces,
+                                        const std::string& save_as = std::string())
 {
-  return tvf_bench::load_mesh(dir, s.file, s.subdivisions, faces);
+  return tvf_bench::load_mesh(dir, s.file, s.subdivisions, faces, save_as);
 }
 
 // 24 unit tangent vectors in faces spread over the mesh, 3 divergences and 3 curls.
@@ -137,7 +142,7 @@ std::vector<int> parse_list(const std::string& s)
 
 int main(int argc, char** argv)
 {
-  std::string dir = TVF_SHARED_DATA_DIR, which = "rocker,bunny,armadillo", cache, chart_file;
+  std::string dir = TVF_SHARED_DATA_DIR, which = "rocker,bunny,armadillo", cache, chart_file, write_dir;
   TVF::Line_chart chart;
   chart.title = "Reduced TVFS: error against the full spline vs. time of a constraint add (d = 100 ... 2000)";
   chart.x_label = "constraint add + solve [s]";
@@ -149,6 +154,7 @@ int main(int argc, char** argv)
     else if(!std::strcmp(argv[i], "--sizes") && i + 1 < argc) sizes = parse_list(argv[++i]);
     else if(!std::strcmp(argv[i], "--cache") && i + 1 < argc) cache = argv[++i];
     else if(!std::strcmp(argv[i], "--chart") && i + 1 < argc) chart_file = argv[++i];
+    else if(!std::strcmp(argv[i], "--write-meshes") && i + 1 < argc) write_dir = argv[++i];
     else dir = argv[i];
   }
   const int largest = *std::max_element(sizes.begin(), sizes.end());
@@ -160,8 +166,17 @@ int main(int argc, char** argv)
   {
     if(which.find(s.key) == std::string::npos) continue;
     int faces = 0;
-    auto hodge = load(dir, s, faces);
+    auto hodge = load(dir, s, faces, write_dir.empty() ? std::string() : write_dir + "/" + s.key + ".off");
     if(!hodge) continue;
+    if(!write_dir.empty())
+    {
+      TVF::Constraint_file file;
+      file.constraints = table_constraints(hodge->operators().mesh(), 7);
+      std::ofstream out(write_dir + "/" + s.key + "-constraints.json");
+      TVF::write_constraint_file(out, file, hodge->operators().mesh());
+      std::printf("wrote %s/%s.off (%d faces) and %s-constraints.json\n", write_dir.c_str(), s.key.c_str(), faces, s.key.c_str());
+      continue;
+    }
     const TVF::Operator_matrices& ops = hodge->operators();
     const Eigen::VectorXd& masses = ops.field_masses();
     // Basis: computed or loaded.

@@ -22,10 +22,12 @@
 namespace tvf_bench {
 
 /// Reads `dir/file`, subdivides it, and returns a Hodge solver on it (null if the file
-/// cannot be read); `faces` receives the number of faces.
+/// cannot be read); `faces` receives the number of faces.  With `save_as`, the subdivided
+/// mesh is also written there (OFF, 17 digits: the same mesh for `tvf`, bit for bit).
 inline std::shared_ptr<CGAL::Tangent_vector_fields::Hodge_solver> load_mesh(const std::string& dir,
                                                                             const std::string& file,
-                                                                            int subdivisions, int& faces)
+                                                                            int subdivisions, int& faces,
+                                                                            const std::string& save_as = std::string())
 {
   namespace TVF = CGAL::Tangent_vector_fields;
   typedef CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3> Mesh;
@@ -37,6 +39,8 @@ inline std::shared_ptr<CGAL::Tangent_vector_fields::Hodge_solver> load_mesh(cons
   }
   for(int i = 0; i < subdivisions; ++i) CGAL::Subdivision_method_3::Loop_subdivision(mesh);
   faces = static_cast<int>(mesh.number_of_faces());
+  if(!save_as.empty() && !CGAL::IO::write_polygon_mesh(save_as, mesh, CGAL::parameters::stream_precision(17)))
+    std::cerr << "cannot write " << save_as << "\n";
   TVF::internal::Mesh_adapter<Mesh> adapter(mesh, CGAL::parameters::default_values());
   auto ops = std::make_shared<TVF::Operator_matrices>(adapter.intrinsic_mesh());
   return std::make_shared<TVF::Hodge_solver>(ops);

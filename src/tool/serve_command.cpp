@@ -20,6 +20,7 @@
 
 
 #include <atomic>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -115,6 +116,10 @@ http::response<http::string_body> answer(const http::request<http::string_body>&
 // over the size limit can be dropped and answered, instead of closing the connection.
 void run_websocket(tcp::socket socket, const http::request<http::string_body>& upgrade, const Server& server)
 {
+  // Small messages (edits) must leave at once: Nagle's algorithm with delayed ACKs would
+  // hold them for up to 40 ms.
+  beast::error_code ignored;
+  socket.set_option(tcp::no_delay(true), ignored);
   websocket::stream<tcp::socket> ws(std::move(socket));
   ws.read_message_max(std::uint64_t(1) << 32); // our own limit is enforced below, message by message
   ws.set_option(websocket::stream_base::decorator(
@@ -256,6 +261,7 @@ int serve_command(const Arguments& args)
     std::fprintf(stderr, "tvf: warning: no editor page in '%s' (built with npm; see --web-root)\n",
                  server.web_root.c_str());
 
+  std::signal(SIGPIPE, SIG_IGN); // a page that vanishes mid-write ends its session, not the server
   asio::io_context io;
   tcp::acceptor acceptor(io);
   try

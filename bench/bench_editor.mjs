@@ -1,0 +1,188 @@
+// The editor's edit loop, end to end: `tvf serve` on a mesh with a saved basis, the page in
+// headless Chromium, and constraint edits driven through the page's own request path
+// (window.tvfEditor.request, the path a mouse drag takes).  For each display setting it
+// prints where the time from a constraint change to the new field on the page goes:
+// solve, reconstruction (field + 3D vectors), lines and scalar (tracing fur or streamlines,
+// divergence/curl), transfer (socket + decoding on arrival), draw (buffers + render + GPU
+// finish).  Then the full-resolution solution: its time and the reduced solution's distance
+// to it, for several basis sizes (error against run time).
+//
+//   node bench/bench_editor.mjs --tvf build/tvf --mesh M.off --basis M.tvfb --constraints C.json
+//        --node-modules build/editor/node_modules [--size 1000] [--sizes 250,500,1000]
+//        [--edits 30] [--full yes] [--chromium /usr/bin/chromium] [--web-root DIR]
+//
+// The meshes and constraint sets of the design benchmark: `bench_design --write-meshes DIR`.
+import { createRequire } from 'node:module';
+import { spawn } from 'node:child_process';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+
+function options(argv) {
+  const o = { chromium: '/usr/bin/chromium', size: '1000', sizes: '', edits: '30', full: 'yes' };
+  for (let i = 2; i < argv.length; i += 2) {
+    if (!argv[i].startsWith('--') || i + 1 >= argv.length) throw new Error(`bad argument ${argv[i]}`);
+    o[argv[i].slice(2).replace(/-(.)/g, (_, c) => c.toUpperCase())] = argv[i + 1];
+  }
+  for (const required of ['tvf', 'mesh', 'basis', 'constraints', 'nodeModules'])
+    if (!o[required]) throw new Error(`missing --${required}`);
+  return o;
+}
+
+const median = (values) => {
+  const s = values.filter(Number.isFinite).sort((a, b) => a - b);
+  if (!s.length) return NaN;
+  const m = s.length >> 1;
+  return s.length % 2 ? s[m] : 0.5 * (s[m - 1] + s[m]);
+};
+const quantile = (values, q) => {
+  const s = values.filter(Number.isFinite).sort((a, b) => a - b);
+  return s.length ? s[Math.min(s.length - 1, Math.floor(q * s.length))] : NaN;
+};
+const f = (x, digits = 1) => (Number.isFinite(x) ? x.toFixed(digits) : '-');
+
+async function main() {
+  const o = options(process.argv);
+  const require = createRequire(path.join(path.resolve(o.nodeModules), 'noop.js'));
+  const { chromium } = require('playwright-core');
+
+  const started = Date.now();
+  const args = ['serve', o.mesh, '--basis', o.basis, '-d', o.size, '--port', '0'];
+  if (o.webRoot) args.push('--web-root', o.webRoot);
+  const server = spawn(o.tvf, args,
+    { stdio: ['ignore', 'pipe', 'inherit'] });
+  const url = await new Promise((resolve, reject) => {
+    let out = '';
+    server.stdout.on('data', (d) => {
+      out += d;
+      const m = out.match(/listening on (http:\/\/\S+)/);
+      if (m) resolve(m[1]);
+    });
+    server.on('exit', (code) => reject(new Error(`tvf serve exited (${code})`)));
+  });
+  const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'tvf-bench-chromium-'));
+  const context = await chromium.launchPersistentContext(profile, {
+    executablePath: o.chromium,
+    headless: true,
+    viewport: { width: 1280, height: 800 },
+    args: ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking',
+      '--disable-component-update', '--disable-sync'],
+  });
+  try {
+    const page = context.pages()[0] || await context.newPage();
+    page.setDefaultTimeout(30 * 60 * 1000); // loading a 5 GB basis takes a while
+    await page.goto(url);
+    await page.waitForFunction(() => window.tvfEditor !== undefined);
+    await page.evaluate(() => window.tvfEditor.ready);
+    const info = await page.evaluate(() => window.tvfEditor.info());
+    console.log(`# Editor edit loop: ${info.mesh.name}, ${info.mesh.faces} faces, basis ${info.basis.size} of ` +
+      `${info.basis.available} eigenfields (page ready ${((Date.now() - started) / 1000).toFixed(0)} s after start)`);
+    console.log(`Chromium ${context.browser() ? context.browser().version() : ''} headless, software GL ` +
+      `(--disable-gpu); server and browser on this machine (loopback).\n`);
+
+    const file = JSON.parse(fs.readFileSync(o.constraints, 'utf8'));
+    await page.evaluate((file) => window.tvfEditor.request({ type: 'load', file }), file);
+    const constraints = await page.evaluate(() => window.tvfEditor.constraints());
+    const vector = constraints.find((c) => c.constraint.type === 'vector');
+    console.log(`${constraints.length} constraints (${o.constraints}); edits change the value of vector constraint ` +
+      `${vector.id} (face ${vector.constraint.face}): the fast path of a drag of its tip; the last row moves it ` +
+      `to other faces (a drag of its anchor: new rows, one new pull-back).  Medians of ${o.edits} edits ` +
+      `(p90 of the total in brackets), milliseconds.\n`);
+
+    const displays = [
+      ['vectors only (no lines, magnitude colours)', { lines: 'none', scalar: 'none' }],
+      ['fur, 4000 strokes', { lines: 'fur', strokes: 4000, scalar: 'none' }],
+      ['fur, 20000 strokes', { lines: 'fur', strokes: 20000, scalar: 'none' }],
+      ['streamlines, separation 0.03 diagonal', { lines: 'streamlines', separation: 0.03, scalar: 'none' }],
+      ['fur 4000 + divergence colours', { lines: 'fur', strokes: 4000, scalar: 'divergence' }],
+    ];
+    console.log('| display | solve | reconstruct | lines | scalar | server | transfer | draw | total (p90) | message |');
+    console.log('|---|---|---|---|---|---|---|---|---|---|');
+    // A unit vector along the first edge of face f (tangent to it), from the mesh the page holds.
+    const tangentIn = (f) => page.evaluate((f) => {
+      const { positions: p, triangles: t } = window.tvfEditor.mesh();
+      const e = [0, 1, 2].map((k) => p[3 * t[3 * f + 1] + k] - p[3 * t[3 * f] + k]);
+      const n = Math.hypot(...e);
+      return e.map((x) => x / n);
+    }, f);
+    const faces = info.mesh.faces;
+    displays.push(['fur 4000, moving the constraint to another face (new rows)',
+      { lines: 'fur', strokes: 4000, scalar: 'none' }, 'move']);
+    for (const [label, display, kind] of displays) {
+      await page.evaluate((d) => window.tvfEditor.request({ type: 'set_display', ...d }), display);
+      const before = await page.evaluate(() => window.tvfEditor.latencyLog().length);
+      for (let k = 0; k < Number(o.edits); ++k) {
+        let constraint;
+        if (kind === 'move') {
+          // A drag of the anchor over the surface: each edit puts the constraint in another face.
+          const face = (vector.constraint.face + 7919 * (k + 1)) % faces;
+          constraint = { type: 'vector', face, vector: await tangentIn(face) };
+        } else {
+          // Scale and flip the vector: a new value in the same face each time.
+          const s = 0.5 + (k % 7) * 0.25, sign = k % 2 ? -1 : 1;
+          constraint = { type: 'vector', face: vector.constraint.face,
+            vector: vector.constraint.vector.map((x) => sign * s * x) };
+        }
+        await page.evaluate(([id, c]) => window.tvfEditor.request({ type: 'change', id, constraint: c }),
+          [vector.id, constraint]);
+      }
+      const log = (await page.evaluate(() => window.tvfEditor.latencyLog())).slice(before)
+        .filter((e) => e.type === 'change');
+      const col = (c) => median(log.map((e) => e[c]));
+      console.log(`| ${label} | ${f(col('solve_ms'), 3)} | ${f(col('reconstruct_ms'))} | ${f(col('lines_ms'))} | ` +
+        `${f(col('scalar_ms'))} | ${f(col('server_ms'))} | ${f(col('transfer_ms'))} | ${f(col('draw_ms'))} | ` +
+        `${f(col('total_ms'))} (${f(quantile(log.map((e) => e.total_ms), 0.9))}) | ` +
+        `${(col('bytes') / 1e6).toFixed(2)} MB |`);
+    }
+
+    if (o.full === 'yes') {
+      // Error against run time: the reduced solution's distance to the full one, per basis size.
+      await page.evaluate(() => window.tvfEditor.request({ type: 'set_display', lines: 'none', scalar: 'none' }));
+      const t0 = Date.now();
+      const header = await page.evaluate(() => window.tvfEditor.request({ type: 'set_solver', solver: 'full' }));
+      const fullSeconds = (Date.now() - t0) / 1000;
+      console.log(`\nFull-resolution solution (${constraints.length} constraints, from switching it on to the field ` +
+        `on the page): ${fullSeconds.toFixed(1)} s.`);
+      const sizes = (o.sizes || `${Math.round(o.size / 4)},${Math.round(o.size / 2)},${o.size}`).split(',').map(Number)
+        .filter((d) => d >= 1 && d <= info.basis.available);
+      console.log('\n| basis size d | value edit: reduced solve + reconstruct | value edit: full | ' +
+        'move edit: reduced solve + reconstruct | move edit: full | reduced vs full, rel. L2 (MX) |');
+      console.log('|---|---|---|---|---|---|');
+      const last = async () => (await page.evaluate(() => window.tvfEditor.latencyLog())).at(-1);
+      const change = (c) => page.evaluate(([id, c]) => window.tvfEditor.request({ type: 'change', id, constraint: c }),
+        [vector.id, c]);
+      for (const d of sizes) {
+        await page.evaluate((d) => window.tvfEditor.request({ type: 'set_basis_size', size: d }), d);
+        const moveReduced = [], moveFull = [];
+        for (let k = 0; k < 2; ++k) {
+          const face = (vector.constraint.face + 104729 * (k + 1)) % faces;
+          await change({ type: 'vector', face, vector: await tangentIn(face) });
+          const e = await last();
+          moveReduced.push(e.solve_ms + e.reconstruct_ms);
+          moveFull.push(e.full_ms);
+        }
+        const reduced = [], full = [];
+        let difference = NaN;
+        for (let k = 0; k < 6; ++k) { // the first puts the constraint back: the table's set again
+          await change({ type: 'vector', face: vector.constraint.face,
+            vector: vector.constraint.vector.map((x) => (k % 2 ? -1 : 1) * x) });
+          const e = await last();
+          if (k > 0) reduced.push(e.solve_ms + e.reconstruct_ms), full.push(e.full_ms);
+          difference = (await page.evaluate(() => window.tvfEditor.lastField().header)).difference;
+        }
+        console.log(`| ${d} | ${f(median(reduced))} ms | ${f(median(full))} ms | ${f(median(moveReduced))} ms | ` +
+          `${f(median(moveFull))} ms | ${f(difference, 4)} |`);
+      }
+      void header;
+    }
+  } finally {
+    await context.close();
+    server.kill('SIGTERM');
+    fs.rmSync(profile, { recursive: true, force: true });
+  }
+}
+
+main().catch((e) => {
+  console.error(e);
+  process.exit(1);
+});
