@@ -98,11 +98,13 @@ export class Editor {
     if (entry?.onDone) entry.onDone(header, entry.message);
     this.syncHandles(header.ids || []);
     // The frame that shows the field, finished on the GPU: the end of draw_ms.
+    const updatedAt = performance.now();
     this.viewer.renderNow();
     this.viewer.finish();
     const drawnAt = performance.now();
     if (entry) {
-      this.latency.add(latencyEntry(entry.message, header, buffer.byteLength, entry.sentAt, arrivedAt, drawnAt));
+      this.latency.add(latencyEntry(entry.message, header, buffer.byteLength,
+        { sentAt: entry.sentAt, arrivedAt, updatedAt, drawnAt }));
     }
     this.ui.field(header);
     this.queue.onFieldDrawn(entry, header);

@@ -4,9 +4,10 @@
 export const COLUMNS = ['solve_ms', 'reconstruct_ms', 'lines_ms', 'scalar_ms', 'server_ms', 'transfer_ms',
   'draw_ms', 'total_ms', 'bytes'];
 
-// message: the request as sent; sentAt: when it left; arrivedAt: when its field arrived; drawnAt: when the frame
-// showing it was finished (performance.now() times).
-export function latencyEntry(message, header, bytes, sentAt, arrivedAt, drawnAt) {
+// message: the request as sent; times (performance.now()): sentAt when it left, arrivedAt
+// when its field arrived, updatedAt when the field was decoded and in the buffers, drawnAt
+// when the frame showing it was finished on the GPU.
+export function latencyEntry(message, header, bytes, { sentAt, arrivedAt, updatedAt, drawnAt }) {
   const t = header.timings || {};
   const server = t.server_ms ?? 0;
   return {
@@ -20,6 +21,8 @@ export function latencyEntry(message, header, bytes, sentAt, arrivedAt, drawnAt)
     server_ms: server,
     transfer_ms: arrivedAt - sentAt - server,
     draw_ms: drawnAt - arrivedAt,
+    update_ms: updatedAt - arrivedAt, // of draw_ms: decoding and buffers
+    render_ms: drawnAt - updatedAt, // of draw_ms: the frame, CPU and GPU
     total_ms: drawnAt - sentAt,
     bytes,
   };
