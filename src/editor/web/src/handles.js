@@ -169,6 +169,6 @@ export function drawHandle(handle, viewer, selected) {
 // The meshes of all handles that can be grabbed.
 export function pickables(handles) {
   const out = [];
-  for (const h of handles) if (!h.removed) for (const child of h.group.children) out.push(child);
+  for (const h of handles) if (!h.removed && h.group.visible) for (const child of h.group.children) out.push(child);
   return out;
 }

@@ -37,14 +37,16 @@ export class Tools {
   down(e) {
     if (e.button !== 0 || !this.editor.mesh) return;
     const { clientX: x, clientY: y } = e;
+    const hit = this.viewer.pick(x, y);
     const grabbed = this.viewer.pickObjects(x, y, pickables(this.editor.handles));
-    if (grabbed) {
+    // Handles behind the surface are out of reach (the margin covers those that sink into it).
+    const reachable = grabbed && (!hit || grabbed.distance <= hit.distance + 0.01 * this.viewer.diagonal);
+    if (reachable) {
       const { handle, role } = grabbed.object.userData;
       this.editor.select(handle);
       this.drag = { kind: role === 'tip' ? 'tip' : 'move', handle, x, y };
       return this.take(e);
     }
-    const hit = this.viewer.pick(x, y);
     if (this.tool === 'select' || !hit) {
       this.drag = { kind: 'orbit', x, y }; // the controls get the press; a click deselects
       return;
@@ -157,7 +159,8 @@ export class Tools {
     const field = this.editor.field;
     const v = new THREE.Vector3();
     if (field) v.fromArray(field.arrays.vectors, 3 * face);
-    if (v.length() > 1e-6 * (field?.header.magnitude_max || 0) && v.length() > 0) return v;
+    const length = v.length();
+    if (length > 0 && length >= 1e-6 * field.header.magnitude_max) return v;
     // No field there yet: along the screen's horizontal, a tenth of the diagonal long.
     v.set(1, 0, 0).applyQuaternion(this.viewer.camera.quaternion);
     v.addScaledVector(normal, -v.dot(normal));

@@ -255,7 +255,7 @@ export class Viewer {
     if (!this.surface) return null;
     this.rayAt(clientX, clientY);
     const hit = this.raycaster.intersectObject(this.surface, false)[0];
-    return hit ? { face: hit.faceIndex, point: hit.point.clone() } : null;
+    return hit ? { face: hit.faceIndex, point: hit.point.clone(), distance: hit.distance } : null;
   }
 
   // The nearest of objects under client coordinates: the intersection or null.
