@@ -110,6 +110,7 @@ export class Panel {
   }
 
   status(text) {
+    if (!$('waiting').hidden) $('waiting-text').textContent = text;
     if (performance.now() < this.errorUntil) return;
     const line = $('status');
     line.textContent = text;
@@ -117,6 +118,7 @@ export class Panel {
   }
 
   error(text) {
+    if (!$('waiting').hidden) $('waiting-text').textContent = text;
     const line = $('status');
     line.textContent = text;
     line.classList.add('error');
@@ -124,10 +126,19 @@ export class Panel {
     $('progress-row').hidden = true;
   }
 
+  // The basis being computed (before the first field: also in the middle of the view) or
+  // the full solver at work.
   progress(stage, fraction) {
+    const f = Math.max(0, Math.min(1, fraction || 0));
+    const text = `${stage} ${Math.round(100 * f)}%`;
     $('progress-row').hidden = false;
-    $('progress').value = Math.max(0, Math.min(1, fraction || 0));
-    $('progress-stage').textContent = `${stage} ${Math.round(100 * (fraction || 0))}%`;
+    $('progress').value = f;
+    $('progress-stage').textContent = text;
+    if (!$('waiting').hidden) {
+      $('waiting-text').textContent = text;
+      $('waiting-progress').hidden = false;
+      $('waiting-progress').value = f;
+    }
   }
 
   info(info) {
@@ -181,6 +192,7 @@ export class Panel {
   // After each field: what it was solved with, and the legend of its colours.
   field(header) {
     $('progress-row').hidden = true;
+    $('waiting').hidden = true;
     // Controls the user is working on keep what the user typed or dragged.
     const active = document.activeElement;
     if (active !== $('basis-size')) $('basis-size').value = String(header.basis_size);
