@@ -246,6 +246,7 @@ export class Editor {
   // the display needs, so the colour decides whether it computes a scalar.
   setDisplay(changes) {
     Object.assign(this.display, changes);
+    this.ui.displaySettings(this.display);
     this.showField();
     return this.queue.push({
       key: 'display',

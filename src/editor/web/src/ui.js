@@ -155,13 +155,7 @@ export class Panel {
     $('strokes').max = String(info.limits?.max_strokes ?? 200000);
     this.showOmega(info.omega);
     this.showSolver(info.solver);
-    const d = this.editor.display;
-    $('colour').value = d.colour;
-    $('lines').value = d.lines;
-    $('strokes').value = String(d.strokes);
-    $('length').value = String(d.length);
-    $('separation').value = String(d.separation);
-    this.showLineControls(d.lines);
+    this.displaySettings(this.editor.display);
     $('progress-row').hidden = true;
     this.status('basis ready; loading the mesh');
   }
@@ -181,6 +175,16 @@ export class Panel {
 
   showSolver(solver) {
     for (const radio of document.querySelectorAll('input[name="solver"]')) radio.checked = radio.value === solver;
+  }
+
+  // The display's settings in their controls (they may come from the hook, not the panel).
+  displaySettings(d) {
+    $('colour').value = d.colour;
+    $('lines').value = d.lines;
+    $('strokes').value = String(d.strokes);
+    $('length').value = String(d.length);
+    $('separation').value = String(d.separation);
+    this.showLineControls(d.lines);
   }
 
   showLineControls(lines) {
