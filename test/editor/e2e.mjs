@@ -74,6 +74,17 @@ async function main() {
 
   const { server, url } = startServer(o);
   const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'tvf-e2e-'));
+  // The server must not outlive the test, whichever way the test ends: a failure, a signal
+  // (CTest's timeout), or the watchdog, which ends a hung test before CTest's 180 s.
+  process.on('exit', () => {
+    server.kill('SIGTERM');
+    fs.rmSync(profile, { recursive: true, force: true });
+  });
+  for (const signal of ['SIGINT', 'SIGTERM']) process.on(signal, () => process.exit(1));
+  setTimeout(() => {
+    console.error('editor e2e: FAILED: no result within 150 s');
+    process.exit(1);
+  }, 150000).unref();
   let browser = null;
   try {
     const address = await url;
@@ -178,8 +189,6 @@ async function main() {
     check(!status.includes('error'), 'the status line shows no error');
   } finally {
     if (browser) await browser.close().catch(() => {});
-    server.kill('SIGTERM');
-    fs.rmSync(profile, { recursive: true, force: true });
   }
 }
 
