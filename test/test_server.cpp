@@ -333,6 +333,64 @@ TEST_F(Server_test, field_honours_constraints_and_edits)
   EXPECT_GT(distance(face_vector(field, f), w), 0.1);
 }
 
+TEST_F(Server_test, fast_value_edits_equal_fresh_solves)
+{
+  // Value edits use the field's cached response to the edited constraint; a fresh session
+  // solving the same constraints from scratch must give the same field.
+  Session a(server->port());
+  const int f = 40, g = 200;
+  const std::array<double, 3> v = tangent(a.mesh, f), u = tangent(a.mesh, g);
+  a.client.send("{\"type\":\"set_display\",\"lines\":\"none\"}");
+  a.client.expect("field");
+  a.client.send("{\"type\":\"add\",\"constraint\":" + vector_constraint(f, v) + "}");
+  const int vid = a.client.expect("added").json.get<int>("id");
+  a.client.expect("field");
+  a.client.send("{\"type\":\"add\",\"constraint\":" + vector_constraint(g, u) + "}");
+  const int uid = a.client.expect("added").json.get<int>("id");
+  a.client.expect("field");
+  a.client.send("{\"type\":\"add\",\"constraint\":{\"type\":\"curl\",\"edge\":77,\"value\":2}}");
+  const int cid = a.client.expect("added").json.get<int>("id");
+  a.client.expect("field");
+  Message field;
+  // Runs of edits of one constraint (the cached responses at work), and switches between
+  // constraints (the responses rebuilt).
+  const std::string schedule = "vvvuuccvv";
+  for(std::size_t k = 0; k < schedule.size(); ++k)
+  {
+    const double s = 0.3 + 0.4 * k;
+    const char which = schedule[k];
+    if(which == 'c')
+      a.client.send("{\"type\":\"change\",\"id\":" + std::to_string(cid) +
+                    ",\"constraint\":{\"type\":\"curl\",\"edge\":77,\"value\":" + std::to_string(-s) + "}}");
+    else
+    {
+      const std::array<double, 3>& w = which == 'u' ? u : v;
+      a.client.send("{\"type\":\"change\",\"id\":" + std::to_string(which == 'u' ? uid : vid) + ",\"constraint\":" +
+                    vector_constraint(which == 'u' ? g : f, {{s * w[0], -s * w[1], s * w[2]}}) + "}");
+    }
+    field = a.client.expect("field");
+  }
+  a.client.send("{\"type\":\"save\"}");
+  std::ostringstream file;
+  boost::property_tree::write_json(file, a.client.expect("constraints").json.get_child("file"), false);
+
+  Session b(server->port());
+  b.client.send("{\"type\":\"load\",\"file\":" + file.str() + "}");
+  b.client.expect("loaded");
+  const Message fresh = b.client.expect("field");
+  const std::vector<float>& x = field.floats.at("vectors");
+  const std::vector<float>& y = fresh.floats.at("vectors");
+  ASSERT_EQ(x.size(), y.size());
+  double largest = 0, difference = 0;
+  for(std::size_t i = 0; i < x.size(); ++i)
+  {
+    largest = std::max(largest, std::fabs(double(y[i])));
+    difference = std::max(difference, std::fabs(double(x[i]) - double(y[i])));
+  }
+  EXPECT_GT(largest, 0.1);
+  EXPECT_LT(difference, 1e-5 * largest); // float32 output; the two paths agree to ~1e-12 in double
+}
+
 TEST_F(Server_test, hostile_messages_get_errors_and_the_server_stays_up)
 {
   Session s(server->port());

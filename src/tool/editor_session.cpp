@@ -184,6 +184,31 @@ std::string text_member(const Tree& tree, const char* key)
   return node.data();
 }
 
+// The values of a constraint the field is affine in, with the constraint's kind and place
+// fixed: a vector's frame components, a divergence's or curl's value.  Empty for a direction
+// (its rows depend on it).
+std::vector<double> value_parameters(const TVF::Intrinsic_mesh& mesh, const TVF::Field_constraint& c)
+{
+  switch(c.kind)
+  {
+  case TVF::Constraint_kind::vector: {
+    const auto a = mesh.to_frame(c.face, c.vector);
+    return {a[0], a[1]};
+  }
+  case TVF::Constraint_kind::divergence:
+  case TVF::Constraint_kind::curl: return {c.value};
+  default: return {};
+  }
+}
+
+TVF::Field_constraint with_value_parameters(const TVF::Intrinsic_mesh& mesh, TVF::Field_constraint c,
+                                            const std::vector<double>& p)
+{
+  if(c.kind == TVF::Constraint_kind::vector) c.vector = mesh.from_frame(c.face, p[0], p[1]);
+  else c.value = p[0];
+  return c;
+}
+
 TVF::Spline_options spline_options(double omega)
 {
   TVF::Spline_options options;
@@ -478,6 +503,7 @@ void Editor_session::add(Request& r)
   }
   const int id = next_id_++;
   entries_[id] = entry;
+  ++structure_;
   r.text("\"type\":\"added\",\"id\":" + std::to_string(id));
   send_field(r);
 }
@@ -512,14 +538,61 @@ void Editor_session::change(Request& r)
       throw;
     }
   }
+  const bool same_rows = old.same_rows_as(constraint);
   entry.constraint = constraint;
   entry.weight = weight;
+  if(!same_rows) ++structure_;
+  else
+  {
+    start = Clock::now();
+    has_edited_field_ = value_edit_field(id, constraint, edited_field_);
+    edited_field_ms_ = milliseconds_since(start);
+  }
   send_field(r);
+}
+
+bool Editor_session::value_edit_field(int id, const TVF::Field_constraint& constraint, Eigen::VectorXd& field)
+{
+  const TVF::Intrinsic_mesh& mesh = model_->matrices().mesh();
+  const std::vector<double> p = value_parameters(mesh, constraint);
+  if(p.empty()) return false;
+  Value_responses& cache = responses_;
+  if(cache.id != id || cache.structure != structure_)
+  {
+    // One pass over the basis for the field and its responses: the coefficients are exact
+    // differences of solves (the solution is linear in the values), the reconstruction of
+    // several columns costs about as much as one (it reads the eigenfunctions once).
+    const TVF::Constraint_id rid = entries_.at(id).reduced;
+    const Eigen::Index d = reduced_->basis_size(), n = static_cast<Eigen::Index>(p.size());
+    Eigen::MatrixXd a(d, 1 + n);
+    a.col(0) = reduced_->coefficients();
+    for(Eigen::Index k = 0; k < n; ++k)
+    {
+      std::vector<double> q = p;
+      q[k] += 1;
+      reduced_->change(rid, with_value_parameters(mesh, constraint, q));
+      a.col(1 + k) = reduced_->coefficients() - a.col(0);
+    }
+    reduced_->change(rid, constraint);
+    const Eigen::MatrixXd x = model_->basis()->decompress({a, 0, 0, {}});
+    cache.id = id;
+    cache.structure = structure_;
+    cache.parameters = p;
+    cache.field = x.col(0);
+    cache.responses = x.rightCols(n);
+    field = cache.field;
+    return true;
+  }
+  Eigen::VectorXd change(p.size());
+  for(std::size_t k = 0; k < p.size(); ++k) change[k] = p[k] - cache.parameters[k];
+  field = cache.field + cache.responses * change;
+  return true;
 }
 
 void Editor_session::remove(Request& r)
 {
   require_ready(r);
+  ++structure_;
   const int id = static_cast<int>(integer_member(r.tree, "id", 0, 1 << 30));
   const auto it = entries_.find(id);
   if(it == entries_.end()) throw Message_error("no constraint with id " + std::to_string(id));
@@ -536,6 +609,7 @@ void Editor_session::remove(Request& r)
 void Editor_session::clear(Request& r)
 {
   require_ready(r);
+  ++structure_;
   reduced_->clear();
   if(use_full_)
   {
@@ -570,6 +644,7 @@ void Editor_session::load(Request& r)
   reduced_ = std::move(reduced);
   full_ = std::move(full);
   omega_ = omega;
+  ++structure_;
   entries_.clear();
   std::vector<int> ids;
   for(std::size_t i = 0; i < file.constraints.size(); ++i)
@@ -612,6 +687,7 @@ void Editor_session::set_omega(Request& r)
   const double omega = number_member(r.tree, "omega");
   if(omega < 0 || omega > 1e12) throw Message_error("\"omega\" must lie in [0, 1e12]");
   reduced_->set_omega(omega);
+  ++structure_;
   if(use_full_)
   {
     std::lock_guard<std::mutex> lock(model_->full_solver_mutex());
@@ -642,6 +718,7 @@ void Editor_session::set_basis_size(Request& r)
       throw Message_error("the constraints do not fit a basis of " + std::to_string(size) + " fields: " + e.what());
     }
     reduced_ = std::move(reduced);
+    ++structure_;
     std::size_t i = 0;
     for(auto& e : entries_) e.second.reduced = ids[i++];
   }
@@ -730,9 +807,20 @@ void Editor_session::send_field(Request& r)
   Clock::time_point start = Clock::now();
   reduced_->coefficients(); // the solve (the small system)
   const double solve_ms = r.reduced_ms + milliseconds_since(start);
-  start = Clock::now();
-  Eigen::VectorXd x = reduced_->field();
-  double reconstruct_ms = milliseconds_since(start);
+  Eigen::VectorXd x;
+  double reconstruct_ms = 0;
+  if(has_edited_field_)
+  {
+    x.swap(edited_field_);
+    reconstruct_ms = edited_field_ms_;
+    has_edited_field_ = false;
+  }
+  else
+  {
+    start = Clock::now();
+    x = reduced_->field();
+    reconstruct_ms = milliseconds_since(start);
+  }
   const TVF::Spline_report* report = &reduced_->report();
 
   std::string full_timing, full_difference;

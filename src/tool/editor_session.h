@@ -9,7 +9,10 @@
 #ifndef TVF_TOOL_EDITOR_SESSION_H
 #define TVF_TOOL_EDITOR_SESSION_H
 
+#include <CGAL/Tangent_vector_fields/Field_constraint.h>
 #include <CGAL/Tangent_vector_fields/Operator_matrices.h>
+
+#include <Eigen/Core>
 
 #include <chrono>
 #include <condition_variable>
@@ -139,11 +142,31 @@ private:
   void send_field(Request& request);
   // The full solver, caught up with the constraints (progress through `request`).
   void sync_full(Request& request);
+  // The reduced field after a value edit of constraint `id` (already applied to the solver),
+  // from the field's cached linear response to that constraint's values; false if the
+  // constraint has no such values (a direction).
+  bool value_edit_field(int id, const TVF::Field_constraint& constraint, Eigen::VectorXd& field);
 
   std::shared_ptr<const Editor_model> model_;
   std::unique_ptr<TVF::Reduced_spline_solver> reduced_;
   std::unique_ptr<TVF::Full_spline_solver> full_;
   std::map<int, Entry> entries_; // by session id
+  // Fast value edits (a drag of a vector's tip): the field is affine in one constraint's
+  // values, so with its response fields cached an edit costs O(nf) instead of a
+  // reconstruction, O(d nf).  Valid while the constraint set's structure (rows, omega,
+  // basis size) is unchanged: `structure_` counts its changes.
+  struct Value_responses
+  {
+    int id = -1;
+    long structure = -1;
+    std::vector<double> parameters;
+    Eigen::VectorXd field;     // the reduced field at `parameters`
+    Eigen::MatrixXd responses; // its change per unit change of each parameter
+  } responses_;
+  long structure_ = 0;
+  Eigen::VectorXd edited_field_; // set by a fast value edit for send_field
+  bool has_edited_field_ = false;
+  double edited_field_ms_ = 0;
   int next_id_ = 0;
   double omega_ = 0;
   bool use_full_ = false;
