@@ -80,6 +80,14 @@ export class Tools {
     }
   }
 
+  // The cursor tells what a press would do: grab a handle, place a constraint, or orbit.
+  hover(e) {
+    const canvas = this.viewer.canvas;
+    if (e.target !== canvas) return;
+    const overHandle = this.viewer.pickObjects(e.clientX, e.clientY, pickables(this.editor.handles)) !== null;
+    canvas.style.cursor = overHandle ? 'grab' : this.tool === 'select' ? 'default' : 'crosshair';
+  }
+
   take(e) {
     e.preventDefault();
     e.stopPropagation();
@@ -91,7 +99,8 @@ export class Tools {
 
   move(e) {
     const d = this.drag;
-    if (!d || d.kind === 'orbit') return;
+    if (!d) return this.hover(e);
+    if (d.kind === 'orbit') return;
     if (!d.dragged && !this.moved(e)) return;
     d.dragged = true;
     if (d.kind === 'place') {
