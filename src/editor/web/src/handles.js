@@ -51,7 +51,7 @@ export class Handle {
 }
 
 // Where a constraint sits on the mesh: {point, normal, face (or undefined)}.
-export function placeOf(handle, viewer) {
+function placeOf(handle, viewer) {
   const c = handle.constraint;
   const mesh = viewer.mesh;
   if (c.type === 'boundary_alignment' || (c.edge !== undefined && c.face === undefined)) {
@@ -73,6 +73,13 @@ export function placeOf(handle, viewer) {
   return { point, normal, face: c.face };
 }
 
+// The point a handle is drawn from: its place, lifted off the surface so that the handle is
+// not half buried in it.  {base, normal, face}
+export function baseOf(handle, viewer) {
+  const place = placeOf(handle, viewer);
+  return { ...place, base: place.point.clone().addScaledVector(place.normal, 0.004 * viewer.diagonal) };
+}
+
 function part(geometry, material, handle, role) {
   const m = new THREE.Mesh(geometry, material);
   m.userData = { handle, role };
@@ -88,7 +95,7 @@ function stretch(object, a, b, radius) {
   object.scale.set(radius, Math.max(length, 1e-9), radius);
 }
 
-// Rebuilds the handle's drawing from its constraint.  size: the mesh's bounding-box diagonal.
+// Rebuilds the handle's drawing from its constraint; sizes are fractions of the mesh's diagonal.
 export function drawHandle(handle, viewer, selected) {
   const group = handle.group;
   const old = new Set(group.children.map((child) => child.material));
@@ -101,9 +108,8 @@ export function drawHandle(handle, viewer, selected) {
   const material = new THREE.MeshLambertMaterial({
     color: colour, emissive: selected ? new THREE.Color(0x888888) : colour.clone().multiplyScalar(0.45),
   });
-  const place = placeOf(handle, viewer);
-  // Lifted off the surface so that the handle is not half buried in it.
-  const base = place.point.clone().addScaledVector(place.normal, 0.004 * size);
+  const place = baseOf(handle, viewer);
+  const base = place.base;
   const grow = selected ? 1.35 : 1;
 
   if (c.type === 'vector' || c.type === 'direction') {

@@ -6,7 +6,7 @@ import { Tools } from './tools.js';
 import { Panel } from './ui.js';
 import { LatencyPanel } from './latency.js';
 import * as THREE from 'three';
-import { placeOf } from './handles.js';
+import { baseOf } from './handles.js';
 
 const viewer = new Viewer(document.getElementById('canvas'));
 const panel = new Panel();
@@ -83,8 +83,7 @@ window.tvfEditor = {
   handleScreen(id) {
     const handle = editor.handleById(id);
     if (!handle) return null;
-    const place = placeOf(handle, viewer);
-    const base = place.point.clone().addScaledVector(place.normal, 0.004 * viewer.diagonal);
+    const { base } = baseOf(handle, viewer);
     const v = handle.constraint.vector || handle.constraint.direction;
     return { anchor: canvasPoint(base), tip: v ? canvasPoint(new THREE.Vector3().fromArray(v).add(base)) : null };
   },

@@ -2,7 +2,7 @@
 // A press on a handle, or on the surface with a placing tool, belongs to the tool; any other
 // press goes on to the orbit controls.
 import * as THREE from 'three';
-import { pickables, placeOf } from './handles.js';
+import { pickables, baseOf } from './handles.js';
 
 const CLICK_PIXELS = 4; // a press that moves less than this is a click
 
@@ -113,9 +113,8 @@ export class Tools {
       } else this.editor.change(d.handle, constraint);
     } else if (d.kind === 'tip') {
       const c = d.handle.constraint;
-      const place = placeOf(d.handle, this.viewer);
-      const base = place.point.clone().addScaledVector(place.normal, 0.004 * this.viewer.diagonal);
-      const v = this.inPlane(e, base, place.normal);
+      const { base, normal } = baseOf(d.handle, this.viewer);
+      const v = this.inPlane(e, base, normal);
       if (v) this.editor.change(d.handle, this.vectorConstraint(c.type, c.face, v));
     } else if (d.kind === 'move') {
       this.moveHandle(d.handle, e);
