@@ -12,7 +12,11 @@ packages=(
   libgtest-dev libbenchmark-dev
   libcairo2-dev pkg-config fonts-dejavu-core # pictures: Field_renderer (PNG, SVG) and its text
   libcgal-demo                               # CGAL's data tree: the default mesh and the test meshes
+  chromium                                   # the editor's end-to-end test (headless)
 )
+# The editor page is bundled with npm; a node already on PATH (say, a newer one from
+# elsewhere) is kept rather than replaced by Debian's.
+if ! command -v node >/dev/null 2>&1; then packages+=(nodejs npm); fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

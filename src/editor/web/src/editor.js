@@ -1,0 +1,278 @@
+// The editing session as the page sees it: the connection, the constraints and their
+// handles, the last field, and the actions the tools and the panel call.
+import { decodeBinary, RequestQueue } from './protocol.js';
+import { Handle, drawHandle } from './handles.js';
+import { latencyEntry } from './latency.js';
+
+// How long the render loop waits for a field before drawing without it.
+const HOLD_FRAMES_MS = 40;
+
+export class Editor {
+  // viewer: a Viewer; latency: a LatencyPanel; ui: callbacks the panel provides
+  // (status, error, progress, info, field, selection, constraints).
+  constructor(viewer, latency, ui) {
+    this.viewer = viewer;
+    this.latency = latency;
+    this.ui = ui;
+    this.handles = new Set();
+    this.selected = null;
+    this.info = null;
+    this.mesh = null;
+    this.field = null;
+    this.display = { lines: 'fur', strokes: 4000, length: 0.03, separation: 0.02, colour: 'magnitude' };
+    this.queue = new RequestQueue((message) => {
+      const sentAt = performance.now();
+      this.socket.send(JSON.stringify(message));
+      this.viewer.holdFrames(sentAt + HOLD_FRAMES_MS);
+      return sentAt;
+    });
+    this.ready = new Promise((resolve, reject) => {
+      this.resolveReady = resolve;
+      this.rejectReady = reject;
+    });
+  }
+
+  connect(url) {
+    this.socket = new WebSocket(url);
+    this.socket.binaryType = 'arraybuffer';
+    this.socket.onopen = () => {
+      this.ui.status('connected; waiting for the basis');
+      this.queue.push({ build: () => ({ type: 'hello' }) }).then(() => this.resolveReady(), this.rejectReady);
+    };
+    this.socket.onmessage = (event) => {
+      const arrivedAt = performance.now();
+      try {
+        if (typeof event.data === 'string') this.onText(JSON.parse(event.data));
+        else this.onBinary(event.data, arrivedAt);
+      } catch (e) {
+        this.ui.error(`bad message from the server: ${e.message}`);
+        console.error(e);
+      }
+    };
+    this.socket.onclose = () => {
+      this.ui.error('the connection to the server is closed; reload the page once the server runs again');
+      this.queue.failAll('connection closed');
+    };
+  }
+
+  onText(message) {
+    const entry = this.queue.inflight;
+    switch (message.type) {
+      case 'status':
+      case 'progress':
+        this.ui.progress(message.stage, message.fraction);
+        break;
+      case 'info':
+        this.info = message;
+        this.display = { ...this.display, ...message.display };
+        this.display.colour = message.display?.scalar && message.display.scalar !== 'none'
+          ? message.display.scalar : 'magnitude';
+        this.ui.info(message);
+        break;
+      case 'added':
+        if (entry?.handle) entry.handle.id = message.id;
+        break;
+      case 'loaded':
+        if (entry?.handles) entry.handles.forEach((h, i) => { h.id = message.ids[i]; });
+        break;
+      case 'error':
+        this.ui.error(message.message);
+        break;
+    }
+    const answered = this.queue.matches(message.request);
+    if (message.type === 'error' && answered?.onError) answered.onError(message);
+    this.queue.onText(message);
+  }
+
+  onBinary(buffer, arrivedAt) {
+    const { header, arrays } = decodeBinary(buffer);
+    if (header.type === 'mesh') {
+      this.mesh = arrays;
+      this.viewer.setMesh(arrays);
+      return;
+    }
+    if (header.type !== 'field') return;
+    const entry = this.queue.matches(header.request);
+    this.field = { header, arrays };
+    this.showField();
+    if (entry?.onDone) entry.onDone(header, entry.message);
+    this.syncHandles(header.ids || []);
+    // The frame that shows the field, finished on the GPU: the end of draw_ms.
+    const updatedAt = performance.now();
+    this.viewer.renderNow();
+    this.viewer.finish();
+    const drawnAt = performance.now();
+    if (entry) {
+      this.latency.add(latencyEntry(entry.message, header, buffer.byteLength,
+        { sentAt: entry.sentAt, arrivedAt, updatedAt, drawnAt }));
+    }
+    this.ui.field(header);
+    this.queue.onFieldDrawn(entry, header);
+  }
+
+  // Colours and lines of the last field, as the display asks.
+  showField() {
+    if (!this.field || !this.mesh) return;
+    const { header, arrays } = this.field;
+    const colour = this.display.colour;
+    if (colour === 'magnitude') this.viewer.colourByMagnitude(arrays.vectors, header.magnitude_max);
+    else if ((colour === 'divergence' || colour === 'curl') && arrays.scalar) {
+      this.viewer.colourByScalar(arrays.scalar, header.scalar_range || [0, 0]);
+    } else this.viewer.colourUniform();
+    this.viewer.setLines(arrays.lines, colour === 'magnitude', this.display.lines === 'fur');
+  }
+
+  // Handles whose constraint the server no longer has go away; the others are confirmed.
+  syncHandles(ids) {
+    const present = new Set(ids);
+    for (const h of [...this.handles]) {
+      if (h.id !== null && !present.has(h.id)) this.dispose(h);
+    }
+    this.ui.constraints();
+    if (this.selected) this.ui.selection(this.selected); // its id may just have arrived
+  }
+
+  dispose(handle) {
+    handle.removed = true;
+    this.viewer.handles.remove(handle.group);
+    this.handles.delete(handle);
+    if (this.selected === handle) this.select(null);
+    this.viewer.requestRender();
+  }
+
+  select(handle) {
+    const previous = this.selected;
+    this.selected = handle;
+    if (previous && !previous.removed) drawHandle(previous, this.viewer, false);
+    if (handle) drawHandle(handle, this.viewer, true);
+    this.ui.selection(handle);
+  }
+
+  redraw(handle) {
+    if (!handle.removed) drawHandle(handle, this.viewer, handle === this.selected);
+  }
+
+  newHandle(constraint, anchor) {
+    const handle = new Handle(constraint, anchor);
+    this.handles.add(handle);
+    this.viewer.handles.add(handle.group);
+    this.redraw(handle);
+    return handle;
+  }
+
+  // --- Actions: each returns the Promise of its answer (see RequestQueue.push). ---
+
+  add(constraint, anchor = null) {
+    const handle = this.newHandle(constraint, anchor);
+    const promise = this.queue.push({
+      build: () => ({ type: 'add', constraint: handle.constraint }),
+      handle,
+      onDone: (header, message) => { handle.confirmed = message.constraint; },
+      onError: () => this.dispose(handle),
+    });
+    return { handle, promise };
+  }
+
+  // A new constraint for an existing handle; merged with a change still waiting to be sent.
+  change(handle, constraint) {
+    handle.constraint = constraint;
+    this.redraw(handle);
+    if (handle === this.selected) this.ui.selection(handle);
+    return this.queue.push({
+      key: handle,
+      build: () => (handle.removed || handle.id === null ? null
+        : { type: 'change', id: handle.id, constraint: handle.constraint }),
+      onDone: (header, message) => { handle.confirmed = message.constraint; },
+      onError: () => {
+        if (handle.confirmed) handle.constraint = handle.confirmed;
+        this.redraw(handle);
+        if (handle === this.selected) this.ui.selection(handle);
+      },
+    });
+  }
+
+  remove(handle) {
+    handle.group.visible = false;
+    if (this.selected === handle) this.select(null);
+    this.viewer.requestRender();
+    return this.queue.push({
+      build: () => (handle.removed || handle.id === null ? null : { type: 'remove', id: handle.id }),
+      onError: () => { handle.group.visible = true; this.viewer.requestRender(); },
+    });
+  }
+
+  clear() {
+    this.select(null);
+    return this.queue.push({ build: () => ({ type: 'clear' }) });
+  }
+
+  // file: a constraint file object.  Its constraints get handles at once; the server's
+  // `loaded` gives them their ids.
+  load(file) {
+    const handles = (file.constraints || []).map((c) => this.newHandle(c));
+    return this.queue.push({
+      build: () => ({ type: 'load', file }),
+      handles,
+      onDone: () => handles.forEach((h) => { h.confirmed = h.constraint; }),
+      onError: () => handles.forEach((h) => this.dispose(h)),
+    });
+  }
+
+  save() {
+    return this.queue.push({ build: () => ({ type: 'save' }) });
+  }
+
+  // A refused setting leaves the session as it was: the panel shows the last field's again.
+  restoreSettings() {
+    if (this.field) this.ui.settings(this.field.header);
+  }
+
+  setOmega(omega) {
+    return this.queue.push({ key: 'omega', build: () => ({ type: 'set_omega', omega }),
+      onError: () => this.restoreSettings() });
+  }
+
+  setBasisSize(size) {
+    return this.queue.push({ key: 'basis', build: () => ({ type: 'set_basis_size', size }),
+      onError: () => this.restoreSettings() });
+  }
+
+  setSolver(solver) {
+    return this.queue.push({ key: 'solver', build: () => ({ type: 'set_solver', solver }),
+      onError: () => this.restoreSettings() });
+  }
+
+  // changes: some of lines, strokes, length, separation, colour.  The server computes what
+  // the display needs, so the colour decides whether it computes a scalar.
+  setDisplay(changes) {
+    Object.assign(this.display, changes);
+    this.ui.displaySettings(this.display);
+    this.showField();
+    return this.queue.push({
+      key: 'display',
+      build: () => {
+        const d = this.display;
+        const scalar = d.colour === 'divergence' || d.colour === 'curl' ? d.colour : 'none';
+        return { type: 'set_display', lines: d.lines, strokes: d.strokes, length: d.length,
+          separation: d.separation, scalar };
+      },
+    });
+  }
+
+  ping() {
+    return this.queue.push({ build: () => ({ type: 'ping' }) });
+  }
+
+  // The constraints the server holds, as it accepted them.
+  constraints() {
+    const ids = new Set(this.field?.header.ids || []);
+    return [...this.handles]
+      .filter((h) => h.id !== null && ids.has(h.id) && h.confirmed)
+      .map((h) => ({ id: h.id, constraint: h.confirmed }));
+  }
+
+  handleById(id) {
+    for (const h of this.handles) if (h.id === id) return h;
+    return null;
+  }
+}

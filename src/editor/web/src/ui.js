@@ -1,0 +1,287 @@
+// The side panel: controls that call the editor's actions, and what the session reports.
+import { cssGradient } from './colormap.js';
+
+const $ = (id) => document.getElementById(id);
+const ERROR_HOLD_MS = 5000; // an error stays readable for a while, even while edits go on
+
+function number(x, digits = 3) {
+  if (!Number.isFinite(x)) return '–';
+  if (x === 0) return '0';
+  const a = Math.abs(x);
+  return a >= 1e4 || a < 1e-3 ? x.toExponential(digits - 1) : x.toPrecision(digits);
+}
+
+// Failures are already shown by the status line; a promise nobody awaits must not throw.
+const quiet = (promise) => promise.catch(() => {});
+
+export class Panel {
+  constructor() {
+    this.errorUntil = 0;
+  }
+
+  // Binds the controls to the editor and the tools (both exist by now).
+  bind(editor, tools) {
+    this.editor = editor;
+    this.tools = tools;
+
+    for (const button of $('tools').querySelectorAll('button')) {
+      button.addEventListener('click', () => tools.setTool(button.dataset.tool));
+    }
+    tools.onToolChange = (tool) => {
+      for (const button of $('tools').querySelectorAll('button')) {
+        button.classList.toggle('active', button.dataset.tool === tool);
+      }
+      $('vortex-row').style.display = tool === 'vortex' ? '' : 'none';
+    };
+    tools.setTool('select');
+    for (const radio of document.querySelectorAll('input[name="vortex-sign"]')) {
+      radio.addEventListener('change', () => {
+        tools.vortexSign = Number(radio.value);
+        const h = editor.selected;
+        if (h && h.constraint.type === 'curl') {
+          quiet(editor.change(h, { ...h.constraint, value: tools.vortexSign * Math.abs(h.constraint.value) }));
+        }
+      });
+    }
+
+    // Strength: a log slider; it also sets the value of the selected source, sink or vortex.
+    const strength = $('strength');
+    const showStrength = () => {
+      tools.strength = Math.pow(10, Number(strength.value));
+      $('strength-value').textContent = number(tools.strength);
+    };
+    strength.value = '0'; // 1: divergence and curl are dimensionless when vectors are lengths
+    showStrength();
+    strength.addEventListener('input', () => {
+      showStrength();
+      const h = editor.selected;
+      if (h && (h.constraint.type === 'divergence' || h.constraint.type === 'curl')) {
+        const sign = h.constraint.value < 0 ? -1 : 1;
+        quiet(editor.change(h, { ...h.constraint, value: sign * tools.strength }));
+      }
+    });
+
+    $('delete').addEventListener('click', () => editor.selected && quiet(editor.remove(editor.selected)));
+    $('clear').addEventListener('click', () => quiet(editor.clear()));
+
+    // omega: the slider's leftmost notch is 0; the number field takes any value.
+    const slider = $('omega-slider');
+    const input = $('omega');
+    slider.addEventListener('input', () => {
+      const x = Number(slider.value);
+      const omega = x <= Number(slider.min) ? 0 : Number(Math.pow(10, x).toPrecision(3));
+      input.value = String(omega);
+      quiet(editor.setOmega(omega));
+    });
+    input.addEventListener('change', () => {
+      const omega = Number(input.value);
+      if (!(omega >= 0)) return this.error('ω must be a number >= 0');
+      this.showOmega(omega);
+      quiet(editor.setOmega(omega));
+    });
+
+    $('basis-size').addEventListener('change', () => {
+      const size = Math.round(Number($('basis-size').value));
+      quiet(editor.setBasisSize(size));
+    });
+    for (const radio of document.querySelectorAll('input[name="solver"]')) {
+      radio.addEventListener('change', () => quiet(editor.setSolver(radio.value)));
+    }
+
+    $('colour').addEventListener('change', () => quiet(editor.setDisplay({ colour: $('colour').value })));
+    $('lines').addEventListener('change', () => {
+      this.showLineControls($('lines').value);
+      quiet(editor.setDisplay({ lines: $('lines').value }));
+    });
+    for (const name of ['strokes', 'length', 'separation']) {
+      $(name).addEventListener('change', () => {
+        const x = Number($(name).value);
+        if (Number.isFinite(x)) quiet(editor.setDisplay({ [name]: name === 'strokes' ? Math.round(x) : x }));
+      });
+    }
+
+    $('save').addEventListener('click', () => this.save());
+    $('load').addEventListener('change', () => this.load($('load').files[0]));
+
+    setInterval(() => {
+      const fps = editor.viewer.fps;
+      $('fps').textContent = fps > 0 ? `render loop: ${fps.toFixed(0)} frames/s` : 'render loop: idle (draws on change)';
+    }, 500);
+  }
+
+  status(text) {
+    if (!$('waiting').hidden) $('waiting-text').textContent = text;
+    if (performance.now() < this.errorUntil) return;
+    const line = $('status');
+    line.textContent = text;
+    line.classList.remove('error');
+  }
+
+  error(text) {
+    if (!$('waiting').hidden) $('waiting-text').textContent = text;
+    const line = $('status');
+    line.textContent = text;
+    line.classList.add('error');
+    this.errorUntil = performance.now() + ERROR_HOLD_MS;
+    $('progress-row').hidden = true;
+  }
+
+  // The basis being computed (before the first field: also in the middle of the view) or
+  // the full solver at work.
+  progress(stage, fraction) {
+    const f = Math.max(0, Math.min(1, fraction || 0));
+    const text = `${stage} ${Math.round(100 * f)}%`;
+    $('progress-row').hidden = false;
+    $('progress').value = f;
+    $('progress-stage').textContent = text;
+    if (!$('waiting').hidden) {
+      $('waiting-text').textContent = text;
+      $('waiting-progress').hidden = false;
+      $('waiting-progress').value = f;
+    }
+  }
+
+  info(info) {
+    const m = info.mesh;
+    $('mesh-name').textContent = m.name;
+    $('mesh-info').innerHTML = `${m.vertices} vertices, ${m.faces} faces, ${m.edges} edges<br>` +
+      `genus ${m.genus}, ${m.boundary_loops} boundary loop${m.boundary_loops === 1 ? '' : 's'}, ` +
+      `${m.components} component${m.components === 1 ? '' : 's'}<br>` +
+      `area ${number(m.area)}, diagonal ${number(m.diagonal)}, mean edge ${number(m.mean_edge_length)}<br>` +
+      `basis: ${info.basis.available} eigenfields (${info.basis.harmonic} harmonic)`;
+    $('basis-size').max = String(info.basis.available);
+    $('basis-size').value = String(info.basis.size);
+    $('basis-available').textContent = `of ${info.basis.available}`;
+    $('strokes').max = String(info.limits?.max_strokes ?? 200000);
+    this.showOmega(info.omega);
+    this.showSolver(info.solver);
+    this.displaySettings(this.editor.display);
+    $('progress-row').hidden = true;
+    this.status('basis ready; loading the mesh');
+  }
+
+  // The settings a field was solved with, back in their controls.
+  settings(header) {
+    $('basis-size').value = String(header.basis_size);
+    this.showOmega(header.omega);
+    this.showSolver(header.solver);
+  }
+
+  showOmega(omega) {
+    $('omega').value = String(omega);
+    const slider = $('omega-slider');
+    slider.value = String(omega > 0 ? Math.log10(omega) : Number(slider.min));
+  }
+
+  showSolver(solver) {
+    for (const radio of document.querySelectorAll('input[name="solver"]')) radio.checked = radio.value === solver;
+  }
+
+  // The display's settings in their controls (they may come from the hook, not the panel).
+  displaySettings(d) {
+    $('colour').value = d.colour;
+    $('lines').value = d.lines;
+    $('strokes').value = String(d.strokes);
+    $('length').value = String(d.length);
+    $('separation').value = String(d.separation);
+    this.showLineControls(d.lines);
+  }
+
+  showLineControls(lines) {
+    $('strokes-row').style.display = lines === 'fur' ? '' : 'none';
+    $('length-row').style.display = lines === 'fur' ? '' : 'none';
+    $('separation-row').style.display = lines === 'streamlines' ? '' : 'none';
+  }
+
+  // After each field: what it was solved with, and the legend of its colours.
+  field(header) {
+    $('progress-row').hidden = true;
+    $('waiting').hidden = true;
+    // Controls the user is working on keep what the user typed or dragged.
+    const active = document.activeElement;
+    if (active !== $('basis-size')) $('basis-size').value = String(header.basis_size);
+    if (active !== $('omega') && active !== $('omega-slider')) this.showOmega(header.omega);
+    this.showSolver(header.solver);
+    const report = header.report || {};
+    const lines = [`${header.solver} solver, ${header.basis_size} eigenfields, ω = ${number(header.omega)}`,
+      `constraint residual ${number(report.residual)}, max |v| ${number(header.magnitude_max)}`];
+    if (header.difference !== undefined) {
+      lines.push(`reduced vs full: ${number(header.difference)} (full solve ${number(header.timings?.full_ms)} ms)`);
+    }
+    if (report.undetermined_harmonic) lines.push(`harmonic part undetermined: ${report.undetermined_harmonic}`);
+    for (const w of report.warnings || []) lines.push(`warning: ${w}`);
+    $('field-info').innerHTML = lines.map((l) => `<div>${l.replace(/</g, '&lt;')}</div>`).join('');
+    this.legend(header);
+    this.status(`ready · ${(header.ids || []).length} constraint${(header.ids || []).length === 1 ? '' : 's'}`);
+  }
+
+  legend(header) {
+    const colour = this.editor.display.colour;
+    const legend = $('legend');
+    if (colour === 'none' || (colour !== 'magnitude' && !header.scalar_range)) {
+      legend.hidden = true;
+      return;
+    }
+    legend.hidden = false;
+    $('legend-name').textContent = colour === 'magnitude' ? '|v|' : colour;
+    $('legend-bar').style.background = cssGradient(colour === 'magnitude' ? 'magnitude' : 'signed');
+    if (colour === 'magnitude') {
+      $('legend-min').textContent = '0';
+      $('legend-max').textContent = number(header.magnitude_max);
+    } else {
+      const extent = Math.max(Math.abs(header.scalar_range[0]), Math.abs(header.scalar_range[1]));
+      $('legend-min').textContent = number(-extent);
+      $('legend-max').textContent = number(extent);
+    }
+  }
+
+  selection(handle) {
+    $('delete').disabled = !handle;
+    if (!handle) {
+      $('selection').textContent = 'No constraint selected';
+      return;
+    }
+    const c = handle.constraint;
+    let detail = '';
+    const v = c.vector || c.direction;
+    if (v) detail = `(${v.map((x) => number(x)).join(', ')}), length ${number(Math.hypot(...v))}`;
+    if (c.value !== undefined) detail = `value ${number(c.value)}`;
+    $('selection').textContent = `${handle.describe()} ${detail}`;
+  }
+
+  constraints() {
+    const n = this.editor.constraints().length;
+    $('constraint-count').textContent = `${n} constraint${n === 1 ? '' : 's'}`;
+  }
+
+  // The session's constraint file, downloaded as constraints.json (ids are the session's
+  // own, not part of the file format).
+  async save() {
+    try {
+      const answer = await this.editor.save();
+      const file = { ...answer.file };
+      delete file.ids;
+      const blob = new Blob([JSON.stringify(file, null, 2) + '\n'], { type: 'application/json' });
+      const link = document.createElement('a');
+      link.href = URL.createObjectURL(blob);
+      link.download = 'constraints.json';
+      link.click();
+      setTimeout(() => URL.revokeObjectURL(link.href), 1000);
+    } catch (e) {
+      this.error(`save failed: ${e.message}`);
+    }
+  }
+
+  async load(file) {
+    if (!file) return;
+    let parsed;
+    try {
+      parsed = JSON.parse(await file.text());
+    } catch (e) {
+      return this.error(`${file.name} is not JSON: ${e.message}`);
+    } finally {
+      $('load').value = ''; // loading the same file again still fires a change
+    }
+    quiet(this.editor.load(parsed));
+  }
+}

@@ -1,0 +1,201 @@
+// End-to-end test of the field editor: `tvf serve` on a small mesh, the bundled page in
+// headless Chromium, constraints placed and dragged with the mouse as a user would, and the
+// server's field checked through the page's hook (window.tvfEditor).
+//
+//   node e2e.mjs --tvf build/tvf --mesh sphere.off --node-modules build/editor/node_modules
+//                --artifacts build/test-artifacts [--chromium /usr/bin/chromium] [--eigenfields 60]
+import { createRequire } from 'node:module';
+import { spawn } from 'node:child_process';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+
+function options(argv) {
+  const o = { chromium: '/usr/bin/chromium', eigenfields: '60' };
+  for (let i = 2; i < argv.length; i += 2) {
+    if (!argv[i].startsWith('--') || i + 1 >= argv.length) throw new Error(`bad argument ${argv[i]}`);
+    o[argv[i].slice(2).replace(/-(.)/g, (_, c) => c.toUpperCase())] = argv[i + 1];
+  }
+  for (const required of ['tvf', 'mesh', 'nodeModules', 'artifacts']) {
+    if (!o[required]) throw new Error(`missing --${required.replace(/[A-Z]/g, (c) => '-' + c.toLowerCase())}`);
+  }
+  return o;
+}
+
+function check(condition, what) {
+  if (!condition) throw new Error(`check failed: ${what}`);
+  console.log(`ok: ${what}`);
+}
+
+const norm = (v) => Math.hypot(...v);
+const sub = (a, b) => a.map((x, i) => x - b[i]);
+const dot = (a, b) => a.reduce((s, x, i) => s + x * b[i], 0);
+
+// Starts the server; resolves with its address once it prints "listening on ...".
+function startServer(o) {
+  const server = spawn(o.tvf, ['serve', o.mesh, '--port', '0', '-n', o.eigenfields],
+    { stdio: ['ignore', 'pipe', 'pipe'] });
+  let stderr = '';
+  server.stderr.on('data', (d) => { stderr += d; process.stderr.write(`[tvf] ${d}`); });
+  const url = new Promise((resolve, reject) => {
+    let stdout = '';
+    server.stdout.on('data', (d) => {
+      stdout += d;
+      const m = stdout.match(/listening on (http:\/\/\S+)/);
+      if (m) resolve(m[1]);
+    });
+    server.on('exit', (code) => reject(new Error(`tvf serve exited (${code}) before listening: ${stderr}`)));
+    setTimeout(() => reject(new Error('tvf serve did not print its address within 60 s')), 60000);
+  });
+  return { server, url };
+}
+
+// The field at face f must equal the constraint's vector projected onto the face's plane, to
+// float32 precision (the field is sent as float32; the solve itself is exact).
+async function checkFieldMatches(page, constraint, what) {
+  const { field, normal } = await page.evaluate((f) => ({
+    field: window.tvfEditor.faceVector(f),
+    normal: window.tvfEditor.faceNormal(f),
+  }), constraint.face);
+  const v = constraint.vector;
+  const expected = sub(v, normal.map((n) => n * dot(v, normal)));
+  const error = norm(sub(field, expected)) / norm(expected);
+  console.log(`  field ${field.map((x) => x.toFixed(5))} vs constraint ${expected.map((x) => x.toFixed(5))}: ` +
+    `relative error ${error.toExponential(2)}`);
+  check(norm(expected) > 0 && error < 1e-4, what);
+}
+
+async function main() {
+  const o = options(process.argv);
+  // ESM imports ignore NODE_PATH: resolve playwright-core from the build's node_modules.
+  const require = createRequire(path.join(path.resolve(o.nodeModules), '..', 'package.json'));
+  const { chromium } = require('playwright-core');
+  fs.mkdirSync(o.artifacts, { recursive: true });
+
+  const { server, url } = startServer(o);
+  const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'tvf-e2e-'));
+  // The server must not outlive the test, whichever way the test ends: a failure, a signal
+  // (CTest's timeout), or the watchdog, which ends a hung test before CTest's 180 s.
+  process.on('exit', () => {
+    server.kill('SIGTERM');
+    fs.rmSync(profile, { recursive: true, force: true });
+  });
+  for (const signal of ['SIGINT', 'SIGTERM']) process.on(signal, () => process.exit(1));
+  setTimeout(() => {
+    console.error('editor e2e: FAILED: no result within 150 s');
+    process.exit(1);
+  }, 150000).unref();
+  let browser = null;
+  try {
+    const address = await url;
+    console.log(`server at ${address}`);
+    browser = await chromium.launchPersistentContext(profile, {
+      executablePath: o.chromium,
+      headless: true,
+      viewport: { width: 1200, height: 800 },
+      args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+        '--disable-background-networking', '--disable-component-update', '--disable-sync'],
+    });
+    const page = browser.pages()[0] || await browser.newPage();
+    const problems = [];
+    page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
+    page.on('console', (m) => { if (m.type() === 'error') problems.push(`console error: ${m.text()}`); });
+
+    await page.goto(address);
+    await page.waitForFunction(() => window.tvfEditor !== undefined);
+    await page.evaluate(() => window.tvfEditor.ready);
+    const info = await page.evaluate(() => window.tvfEditor.info());
+    check(info.mesh.faces > 0 && info.basis.available > 0,
+      `the page got the mesh (${info.mesh.faces} faces) and the basis (${info.basis.available} eigenfields)`);
+
+    // --- A vector constraint, placed by pressing on the surface and dragging ---
+    await page.click('button[data-tool="vector"]');
+    const canvas = await page.locator('#canvas').boundingBox();
+    const centre = { x: canvas.width / 2, y: canvas.height / 2 };
+    const under = await page.evaluate(({ x, y }) => window.tvfEditor.faceAt(x, y), centre);
+    check(under !== null, `the surface is under the centre of the view (face ${under?.face})`);
+    const start = { x: canvas.x + centre.x, y: canvas.y + centre.y };
+    await page.mouse.move(start.x, start.y);
+    await page.mouse.down();
+    await page.mouse.move(start.x + 70, start.y - 40, { steps: 8 });
+    await page.mouse.up();
+    await page.evaluate(() => window.tvfEditor.idle());
+
+    let constraints = await page.evaluate(() => window.tvfEditor.constraints());
+    check(constraints.length === 1 && constraints[0].constraint.type === 'vector',
+      'one vector constraint after the drag');
+    const placed = constraints[0];
+    check(placed.constraint.face === under.face, `it sits on the face that was pressed (${under.face})`);
+    await checkFieldMatches(page, placed.constraint, 'the field at that face is the constraint\'s vector');
+
+    // --- Its tip dragged to a new direction ---
+    const handle = await page.evaluate((id) => window.tvfEditor.handleScreen(id), placed.id);
+    const tip = { x: canvas.x + handle.tip.x, y: canvas.y + handle.tip.y };
+    await page.mouse.move(tip.x, tip.y);
+    await page.mouse.down();
+    await page.mouse.move(tip.x - 90, tip.y + 60, { steps: 10 });
+    await page.mouse.up();
+    await page.evaluate(() => window.tvfEditor.idle());
+    constraints = await page.evaluate(() => window.tvfEditor.constraints());
+    check(constraints.length === 1 && constraints[0].id === placed.id, 'still one constraint, the same one');
+    const moved = constraints[0].constraint;
+    const turn = Math.acos(dot(moved.vector, placed.constraint.vector) /
+      (norm(moved.vector) * norm(placed.constraint.vector))) * 180 / Math.PI;
+    check(moved.face === placed.constraint.face && turn > 20,
+      `dragging the tip turned the vector by ${turn.toFixed(0)} degrees`);
+    await checkFieldMatches(page, moved, 'the field at that face follows the new vector');
+
+    // --- A source by a click, selected and removed with the Delete key ---
+    await page.click('button[data-tool="source"]');
+    const other = { x: canvas.x + centre.x - 0.12 * canvas.height, y: canvas.y + centre.y + 0.1 * canvas.height };
+    await page.mouse.click(other.x, other.y);
+    await page.evaluate(() => window.tvfEditor.idle());
+    constraints = await page.evaluate(() => window.tvfEditor.constraints());
+    const source = constraints.find((c) => c.constraint.type === 'divergence');
+    check(constraints.length === 2 && source && source.constraint.value > 0, 'a click with the source tool adds a source');
+    await page.keyboard.press('Delete');
+    await page.evaluate(() => window.tvfEditor.idle());
+    constraints = await page.evaluate(() => window.tvfEditor.constraints());
+    check(constraints.length === 1 && constraints[0].id === placed.id, 'Delete removes the selected source');
+
+    // --- Display: divergence colours and streamlines, through the panel ---
+    await page.selectOption('#colour', 'divergence');
+    await page.selectOption('#lines', 'streamlines');
+    await page.evaluate(() => window.tvfEditor.idle());
+    const field = await page.evaluate(() => {
+      const f = window.tvfEditor.lastField();
+      return { scalar: f.scalar?.length ?? 0, lines: f.lines?.length ?? 0 };
+    });
+    check(field.scalar === info.mesh.vertices && field.lines > 0, 'divergence per vertex and streamlines arrive');
+
+    // --- The latency log ---
+    const log = await page.evaluate(() => window.tvfEditor.latencyLog());
+    const edits = log.filter((e) => e.type === 'add' || e.type === 'change');
+    const sane = (e) => [e.solve_ms, e.server_ms, e.draw_ms, e.total_ms].every((x) => Number.isFinite(x) && x >= 0) &&
+      e.transfer_ms > -1 && e.total_ms + 1e-6 >= e.server_ms + e.draw_ms && e.bytes > 0;
+    check(edits.length >= 3 && edits.every(sane), `${edits.length} edits in the latency log, all with sane timings`);
+    const median = (key) => {
+      const s = edits.map((e) => e[key]).sort((a, b) => a - b);
+      return s[s.length >> 1];
+    };
+    console.log('  median ms: ' + ['solve_ms', 'reconstruct_ms', 'lines_ms', 'server_ms', 'transfer_ms', 'draw_ms',
+      'total_ms'].map((k) => `${k.replace('_ms', '')} ${median(k).toFixed(2)}`).join(', ') +
+      `; message ${median('bytes')} bytes`);
+
+    const status = await page.locator('#status').getAttribute('class');
+    await page.screenshot({ path: path.join(o.artifacts, 'editor.png') });
+    console.log(`screenshot: ${path.join(o.artifacts, 'editor.png')}`);
+    check(problems.length === 0, `no errors in the page${problems.length ? ': ' + problems.join('; ') : ''}`);
+    check(!status.includes('error'), 'the status line shows no error');
+  } finally {
+    if (browser) await browser.close().catch(() => {});
+  }
+}
+
+main().then(() => {
+  console.log('editor e2e: passed');
+  process.exit(0);
+}, (e) => {
+  console.error(`editor e2e: FAILED: ${e.stack || e.message}`);
+  process.exit(1);
+});
