@@ -21,17 +21,6 @@ namespace {
 
 typedef boost::property_tree::ptree Tree;
 
-// A JSON number as text (the tree keeps text).  Strict: the whole text must be a number.
-// Overflowing numbers such as 1e999 read as infinite, so that errors say "not finite".
-bool read_number(const Tree& node, double& x)
-{
-  const std::string& text = node.data();
-  if(!node.empty() || text.empty()) return false;
-  char* end = nullptr;
-  x = std::strtod(text.c_str(), &end);
-  return end == text.c_str() + text.size();
-}
-
 struct Reader
 {
   const Tree& node;
@@ -43,7 +32,7 @@ struct Reader
   {
     if(!has(key)) fail(std::string("missing \"") + key + "\"");
     double x = 0;
-    if(!read_number(node.get_child(key), x)) fail(std::string("\"") + key + "\" is not a number");
+    if(!internal::read_json_number(node.get_child(key), x)) fail(std::string("\"") + key + "\" is not a number");
     if(!std::isfinite(x)) fail(std::string("\"") + key + "\" is not finite");
     return x;
   }
@@ -60,7 +49,7 @@ struct Reader
     int k = 0;
     for(const auto& child : node.get_child(key))
     {
-      if(!child.first.empty() || k == 3 || !read_number(child.second, v[k++]))
+      if(!child.first.empty() || k == 3 || !internal::read_json_number(child.second, v[k++]))
         fail(std::string("\"") + key + "\" must be an array of 3 numbers");
     }
     if(k != 3) fail(std::string("\"") + key + "\" must be an array of 3 numbers");
@@ -126,6 +115,15 @@ Field_constraint parse(const Tree& node, const std::string& name, const Intrinsi
 } // namespace
 
 namespace internal {
+
+bool read_json_number(const boost::property_tree::ptree& node, double& x)
+{
+  const std::string& text = node.data();
+  if(!node.empty() || text.empty()) return false;
+  char* end = nullptr;
+  x = std::strtod(text.c_str(), &end);
+  return end == text.c_str() + text.size();
+}
 
 Field_constraint parse_constraint(const boost::property_tree::ptree& node, const std::string& name,
                                   const Operator_matrices& operators, double* weight)

@@ -5,6 +5,7 @@
 // request, the full) spline solver, answer with the field.  See doc/editor_protocol.md.
 
 #include "editor_session.h"
+#include "tool.h" // field_norm
 
 #include <CGAL/Tangent_vector_fields/Eigenfield_basis.h>
 #include <CGAL/Tangent_vector_fields/Full_spline_solver.h>
@@ -157,12 +158,9 @@ const Tree& member(const Tree& tree, const char* key)
 
 double number_value(const Tree& node, const std::string& key)
 {
-  const std::string& text = node.data();
-  if(!node.empty() || text.empty()) throw Message_error("\"" + key + "\" must be a number");
-  char* end = nullptr;
-  const double x = std::strtod(text.c_str(), &end);
-  if(end != text.c_str() + text.size()) throw Message_error("\"" + key + "\" must be a number");
-  if(!std::isfinite(x)) throw Message_error("\"" + key + "\" is not finite"); // 1e999 parses to inf
+  double x = 0;
+  if(!TVF::internal::read_json_number(node, x)) throw Message_error("\"" + key + "\" must be a number");
+  if(!std::isfinite(x)) throw Message_error("\"" + key + "\" is not finite"); // 1e999 reads as inf
   return x;
 }
 
@@ -830,16 +828,10 @@ void Editor_session::send_field(Request& r)
     start = Clock::now();
     Eigen::VectorXd x_full = full_->field();
     const double full_ms = r.full_ms + milliseconds_since(start);
-    const Eigen::VectorXd& areas = model_->matrices().face_areas();
-    double difference = 0, norm = 0;
-    for(int f = 0; f < nf; ++f)
-    {
-      const double dx = x[2 * f] - x_full[2 * f], dy = x[2 * f + 1] - x_full[2 * f + 1];
-      difference += areas[f] * (dx * dx + dy * dy);
-      norm += areas[f] * (x_full[2 * f] * x_full[2 * f] + x_full[2 * f + 1] * x_full[2 * f + 1]);
-    }
+    const double difference = field_norm(model_->matrices(), x - x_full);
+    const double norm = field_norm(model_->matrices(), x_full);
     full_timing = ",\"full_ms\":" + short_number(full_ms);
-    full_difference = ",\"difference\":" + number(norm > 0 ? std::sqrt(difference / norm) : std::sqrt(difference));
+    full_difference = ",\"difference\":" + number(norm > 0 ? difference / norm : difference);
     x.swap(x_full);
     report = &full_->report();
   }

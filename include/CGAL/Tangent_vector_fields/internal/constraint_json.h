@@ -18,6 +18,10 @@ namespace CGAL {
 namespace Tangent_vector_fields {
 namespace internal {
 
+/// A JSON number (the tree keeps its text).  Strict: the whole text must be a number; an
+/// overflowing one such as `1e999` reads as infinite, so that callers can say "not finite".
+bool read_json_number(const boost::property_tree::ptree& node, double& x);
+
 /// One entry of `"constraints"`, checked like `read_constraint_file` does; errors start
 /// with `name`.  The optional `"weight"` goes to `weight` if given (1 if absent).
 /// \throws Invalid_input
