@@ -189,7 +189,6 @@ private:
   explicit Eigenfield_basis(std::shared_ptr<const Hodge_solver> solver);
   void merge(int count); // fills order_ and values_ with the `count` lowest elements
   void update_values();  // values_ from order_
-  std::uint64_t mesh_fingerprint() const;
 
   std::shared_ptr<const Hodge_solver> solver_;
   Matrix exact_functions_, coexact_functions_, harmonic_;

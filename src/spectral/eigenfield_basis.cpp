@@ -7,6 +7,7 @@
 #include <CGAL/Tangent_vector_fields/Eigenfield_basis.h>
 #include <CGAL/Tangent_vector_fields/Generalized_eigensolver.h>
 #include <CGAL/Tangent_vector_fields/errors.h>
+#include <CGAL/Tangent_vector_fields/internal/basis_file.h>
 
 #include <Eigen/Dense>
 
@@ -154,99 +155,8 @@ int count_below(const Scalar_problem& p, double tau)
   return count_eigenvalues_below(p.A, p.d, tau * p.area) - static_cast<int>(p.kernel.cols());
 }
 
-// FNV-1a, for the file fingerprint.
-struct Hasher
-{
-  std::uint64_t h = 1469598103934665603ull;
-  void add(const void* data, std::size_t bytes)
-  {
-    const unsigned char* c = static_cast<const unsigned char*>(data);
-    for(std::size_t i = 0; i < bytes; ++i)
-    {
-      h ^= c[i];
-      h *= 1099511628211ull;
-    }
-  }
-  template <class T>
-  void add(const T& value)
-  {
-    add(&value, sizeof(T));
-  }
-};
-
 const char file_magic[8] = {'T', 'V', 'F', 'B', 'A', 'S', 'I', 'S'};
 const std::uint32_t file_version = 1;
-const std::uint32_t byte_order_mark = 0x01020304u;
-
-// Geometry signature: total area and four pseudo-randomly weighted sums of the edge
-// lengths.  Equal to ~1e-12 relative only for the same intrinsic geometry.
-std::array<double, 5> geometry_signature(const Intrinsic_mesh& mesh)
-{
-  std::array<double, 5> s{};
-  for(int f = 0; f < mesh.number_of_faces(); ++f) s[0] += mesh.face_area(f);
-  std::uint64_t state = 0x243f6a8885a308d3ull;
-  for(int e = 0; e < mesh.number_of_edges(); ++e)
-    for(int k = 1; k < 5; ++k)
-    {
-      state = state * 6364136223846793005ull + 1442695040888963407ull;
-      const double weight = 0.5 + double(state >> 11) / double(1ull << 53);
-      s[k] += weight * mesh.edge_length(e);
-    }
-  return s;
-}
-
-template <class T>
-void write_value(std::ostream& out, const T& value)
-{
-  out.write(reinterpret_cast<const char*>(&value), sizeof(T));
-}
-
-void write_matrix(std::ostream& out, const Eigen::MatrixXd& M)
-{
-  write_value<std::int64_t>(out, M.rows());
-  write_value<std::int64_t>(out, M.cols());
-  out.write(reinterpret_cast<const char*>(M.data()), static_cast<std::streamsize>(sizeof(double) * M.size()));
-}
-
-class Reader
-{
-public:
-  Reader(std::istream& in, const std::string& path, std::uint64_t bytes) : in_(in), path_(path), left_(bytes) {}
-  template <class T>
-  T value()
-  {
-    T v;
-    read(&v, sizeof(T));
-    return v;
-  }
-  Eigen::MatrixXd matrix(Eigen::Index rows, Eigen::Index cols, const char* what)
-  {
-    const std::int64_t r = value<std::int64_t>(), c = value<std::int64_t>();
-    if((rows >= 0 && r != rows) || (cols >= 0 && c != cols) || r < 0 || c < 0)
-      fail(std::string("the ") + what + " have the wrong size");
-    if(static_cast<std::uint64_t>(r) * static_cast<std::uint64_t>(c) * sizeof(double) > left_)
-      fail("the file is truncated");
-    Eigen::MatrixXd M(r, c);
-    read(M.data(), sizeof(double) * M.size());
-    return M;
-  }
-  [[noreturn]] void fail(const std::string& why) const
-  {
-    throw Invalid_input("cannot load the spectral basis from '" + path_ + "': " + why);
-  }
-
-private:
-  void read(void* data, std::size_t bytes)
-  {
-    if(bytes > left_) fail("the file is truncated");
-    in_.read(static_cast<char*>(data), static_cast<std::streamsize>(bytes));
-    if(!in_) fail("read error");
-    left_ -= bytes;
-  }
-  std::istream& in_;
-  std::string path_;
-  std::uint64_t left_;
-};
 
 } // namespace
 
@@ -604,31 +514,17 @@ Compressed_fields Eigenfield_basis::compress(const Matrix& fields, int k) const
   return c;
 }
 
-std::uint64_t Eigenfield_basis::mesh_fingerprint() const
-{
-  const Intrinsic_mesh& mesh = operators().mesh();
-  Hasher h;
-  h.add(mesh.number_of_vertices());
-  h.add(mesh.number_of_edges());
-  h.add(mesh.number_of_faces());
-  for(int f = 0; f < mesh.number_of_faces(); ++f)
-  {
-    h.add(mesh.face_vertices(f));
-    h.add(mesh.face_edges(f));
-  }
-  return h.h;
-}
-
 void Eigenfield_basis::save(const std::string& path) const
 {
+  using internal::write_matrix;
+  using internal::write_value;
   std::ofstream out(path, std::ios::binary);
   if(!out) throw Invalid_input("cannot write the spectral basis to '" + path + "'");
   const Intrinsic_mesh& mesh = operators().mesh();
   out.write(file_magic, sizeof(file_magic));
   write_value(out, file_version);
-  write_value(out, byte_order_mark);
-  write_value(out, mesh_fingerprint());
-  for(double s : geometry_signature(mesh)) write_value(out, s);
+  write_value(out, internal::byte_order_mark);
+  internal::write_mesh_identity(out, mesh);
   write_matrix(out, exact_values_);
   write_matrix(out, exact_functions_);
   write_matrix(out, coexact_values_);
@@ -657,24 +553,15 @@ Eigenfield_basis Eigenfield_basis::load(std::shared_ptr<const Hodge_solver> solv
   if(!in) throw Invalid_input("cannot open the spectral basis file '" + path + "'");
   const std::uint64_t bytes = static_cast<std::uint64_t>(in.tellg());
   in.seekg(0);
-  Reader r(in, path, bytes);
-  char magic[8];
-  for(char& c : magic) c = r.value<char>();
-  if(std::memcmp(magic, file_magic, sizeof(magic)) != 0) r.fail("not a spectral basis file");
+  internal::Binary_reader r(in, path, bytes, "spectral basis");
+  r.expect_magic(file_magic, "not a spectral basis file");
   const std::uint32_t version = r.value<std::uint32_t>();
   if(version != file_version)
     r.fail("file format version " + std::to_string(version) + ", this library reads version " +
            std::to_string(file_version));
-  if(r.value<std::uint32_t>() != byte_order_mark) r.fail("written on a machine of another byte order");
+  if(r.value<std::uint32_t>() != internal::byte_order_mark) r.fail("written on a machine of another byte order");
   const Intrinsic_mesh& mesh = basis.operators().mesh();
-  if(r.value<std::uint64_t>() != basis.mesh_fingerprint())
-    r.fail("it belongs to a mesh with other connectivity");
-  const std::array<double, 5> signature = geometry_signature(mesh);
-  for(double s : signature)
-  {
-    const double stored = r.value<double>();
-    if(!(std::abs(stored - s) <= 1e-9 * std::abs(s))) r.fail("it belongs to a mesh with other edge lengths");
-  }
+  r.expect_mesh_identity(mesh);
   const Eigen::Index nv = mesh.number_of_vertices(), ne = mesh.number_of_interior_edges(), nf = mesh.number_of_faces();
   basis.exact_values_ = r.matrix(-1, 1, "exact eigenvalues");
   basis.exact_functions_ = r.matrix(nv, basis.exact_values_.size(), "exact eigenfunctions");
@@ -699,8 +586,7 @@ Eigenfield_basis Eigenfield_basis::load(std::shared_ptr<const Hodge_solver> solv
     *x = r.value<double>();
   for(int* x : {&rep.exact_inertia, &rep.exact_expected, &rep.coexact_inertia, &rep.coexact_expected})
     *x = r.value<std::int32_t>();
-  for(char& c : magic) c = r.value<char>();
-  if(std::memcmp(magic, file_magic, sizeof(magic)) != 0) r.fail("the file is corrupt (no end marker)");
+  r.expect_magic(file_magic, "the file is corrupt (no end marker)");
   basis.update_values();
   if(!basis.values_.allFinite() || !basis.exact_functions_.allFinite() || !basis.coexact_functions_.allFinite() ||
      !basis.harmonic_.allFinite())

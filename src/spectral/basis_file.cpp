@@ -1,0 +1,125 @@
+// Copyright (c) 2026 The Tangent_vector_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#include <CGAL/Tangent_vector_fields/internal/basis_file.h>
+#include <CGAL/Tangent_vector_fields/errors.h>
+
+#include <cmath>
+#include <cstring>
+
+namespace CGAL {
+namespace Tangent_vector_fields {
+namespace internal {
+
+namespace {
+
+// FNV-1a.
+struct Hasher
+{
+  std::uint64_t h = 1469598103934665603ull;
+  void add(const void* data, std::size_t bytes)
+  {
+    const unsigned char* c = static_cast<const unsigned char*>(data);
+    for(std::size_t i = 0; i < bytes; ++i)
+    {
+      h ^= c[i];
+      h *= 1099511628211ull;
+    }
+  }
+  template <class T>
+  void add(const T& value)
+  {
+    add(&value, sizeof(T));
+  }
+};
+
+} // namespace
+
+std::uint64_t mesh_fingerprint(const Intrinsic_mesh& mesh)
+{
+  Hasher h;
+  h.add(mesh.number_of_vertices());
+  h.add(mesh.number_of_edges());
+  h.add(mesh.number_of_faces());
+  for(int f = 0; f < mesh.number_of_faces(); ++f)
+  {
+    h.add(mesh.face_vertices(f));
+    h.add(mesh.face_edges(f));
+  }
+  return h.h;
+}
+
+std::array<double, 5> geometry_signature(const Intrinsic_mesh& mesh)
+{
+  std::array<double, 5> s{};
+  for(int f = 0; f < mesh.number_of_faces(); ++f) s[0] += mesh.face_area(f);
+  std::uint64_t state = 0x243f6a8885a308d3ull;
+  for(int e = 0; e < mesh.number_of_edges(); ++e)
+    for(int k = 1; k < 5; ++k)
+    {
+      state = state * 6364136223846793005ull + 1442695040888963407ull;
+      const double weight = 0.5 + double(state >> 11) / double(1ull << 53);
+      s[k] += weight * mesh.edge_length(e);
+    }
+  return s;
+}
+
+void write_matrix(std::ostream& out, const Eigen::MatrixXd& M)
+{
+  write_value<std::int64_t>(out, M.rows());
+  write_value<std::int64_t>(out, M.cols());
+  out.write(reinterpret_cast<const char*>(M.data()), static_cast<std::streamsize>(sizeof(double) * M.size()));
+}
+
+void write_mesh_identity(std::ostream& out, const Intrinsic_mesh& mesh)
+{
+  write_value(out, mesh_fingerprint(mesh));
+  for(double s : geometry_signature(mesh)) write_value(out, s);
+}
+
+Eigen::MatrixXd Binary_reader::matrix(Eigen::Index rows, Eigen::Index cols, const char* what)
+{
+  const std::int64_t r = value<std::int64_t>(), c = value<std::int64_t>();
+  if((rows >= 0 && r != rows) || (cols >= 0 && c != cols) || r < 0 || c < 0)
+    fail(std::string("the ") + what + " have the wrong size");
+  // Checked by division: r * c * 8 may overflow for hostile sizes.
+  if(r > 0 && static_cast<std::uint64_t>(c) > left_ / sizeof(double) / static_cast<std::uint64_t>(r))
+    fail("the file is truncated");
+  Eigen::MatrixXd M(r, c);
+  read(M.data(), sizeof(double) * M.size());
+  return M;
+}
+
+void Binary_reader::expect_magic(const char (&magic)[8], const std::string& why_not)
+{
+  char found[8];
+  for(char& c : found) c = value<char>();
+  if(std::memcmp(found, magic, sizeof(found)) != 0) fail(why_not);
+}
+
+void Binary_reader::expect_mesh_identity(const Intrinsic_mesh& mesh)
+{
+  if(value<std::uint64_t>() != mesh_fingerprint(mesh)) fail("it belongs to a mesh with other connectivity");
+  for(double s : geometry_signature(mesh))
+  {
+    const double stored = value<double>();
+    if(!(std::abs(stored - s) <= 1e-9 * std::abs(s))) fail("it belongs to a mesh with other edge lengths");
+  }
+}
+
+void Binary_reader::fail(const std::string& why) const
+{
+  throw Invalid_input("cannot load the " + what_ + " from '" + path_ + "': " + why);
+}
+
+void Binary_reader::read(void* data, std::size_t bytes)
+{
+  if(bytes > left_) fail("the file is truncated");
+  in_.read(static_cast<char*>(data), static_cast<std::streamsize>(bytes));
+  if(!in_) fail("read error");
+  left_ -= bytes;
+}
+
+} // namespace internal
+} // namespace Tangent_vector_fields
+} // namespace CGAL
