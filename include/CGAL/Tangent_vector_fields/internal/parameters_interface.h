@@ -31,3 +31,7 @@ TVF_add_named_parameter(progress_callback_t, progress_callback, progress_callbac
 // Field design
 TVF_add_named_parameter(spline_tension_t, spline_tension, spline_tension)
 TVF_add_named_parameter(harmonic_eigenvalue_t, harmonic_eigenvalue, harmonic_eigenvalue)
+
+TVF_add_named_parameter(alignment_field_map_t, alignment_field_map, alignment_field_map)
+TVF_add_named_parameter(alignment_weight_t, alignment_weight, alignment_weight)
+TVF_add_named_parameter(n_field_boundary_t, n_field_boundary, n_field_boundary)

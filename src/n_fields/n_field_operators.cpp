@@ -1,0 +1,308 @@
+// Copyright (c) 2026 The Tangent_vector_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#include <CGAL/Tangent_vector_fields/N_field_operators.h>
+#include <CGAL/Tangent_vector_fields/errors.h>
+#include <CGAL/Tangent_vector_fields/internal/n_field_geometry.h>
+
+#include <cmath>
+#include <complex>
+#include <optional>
+#include <queue>
+#include <vector>
+
+namespace CGAL {
+namespace Tangent_vector_fields {
+
+namespace internal {
+
+std::array<double, 2> corner_layout(const Intrinsic_mesh& mesh, int f, int k)
+{
+  if(k == 0) return {0., 0.};
+  if(k == 1) return {mesh.face_edge_length(f, 2), 0.};
+  return mesh.corner2_layout(f);
+}
+
+int local_corner(const Intrinsic_mesh& mesh, int f, int v)
+{
+  const auto& c = mesh.face_vertices(f);
+  return c[0] == v ? 0 : c[1] == v ? 1 : c[2] == v ? 2 : -1;
+}
+
+double edge_angle(const Intrinsic_mesh& mesh, int f, int from, int to)
+{
+  const auto p = corner_layout(mesh, f, local_corner(mesh, f, from));
+  const auto q = corner_layout(mesh, f, local_corner(mesh, f, to));
+  return std::atan2(q[1] - p[1], q[0] - p[0]);
+}
+
+double corner_angle(const Intrinsic_mesh& mesh, int f, int k)
+{
+  const auto p2 = mesh.corner2_layout(f);
+  const double l2 = mesh.face_edge_length(f, 2);
+  const double a0 = std::atan2(p2[1], p2[0]);
+  const double a1 = std::atan2(p2[1], l2 - p2[0]);
+  return k == 0 ? a0 : k == 1 ? a1 : M_PI - a0 - a1;
+}
+
+double wrap_angle(double a)
+{
+  a = std::fmod(a + M_PI, 2 * M_PI);
+  if(a < 0) a += 2 * M_PI;
+  return a - M_PI;
+}
+
+} // namespace internal
+
+struct N_field_operators::Cache
+{
+  std::optional<Vector> transport, weights, curvatures;
+  std::optional<Sparse_matrix> S;
+  std::optional<Matrix> kernel;
+};
+
+N_field_operators::N_field_operators(std::shared_ptr<const Operator_matrices> operators, int n,
+                                     const N_field_options& options)
+  : operators_(std::move(operators)), n_(n), options_(options), cache_(std::make_unique<Cache>())
+{
+  if(!operators_) throw Invalid_input("n-field operators: no operators given");
+  if(n < 1) throw Invalid_input("n-field operators: n must be at least 1 (got " + std::to_string(n) + ")");
+}
+
+N_field_operators::~N_field_operators() = default;
+
+const N_field_operators::Vector& N_field_operators::transport_angles() const
+{
+  if(!cache_->transport)
+  {
+    const Intrinsic_mesh& mesh = this->mesh();
+    Vector t(mesh.number_of_interior_edges());
+    for(int i = 0; i < t.size(); ++i)
+    {
+      const int e = mesh.interior_edges()[i];
+      const auto& v = mesh.edge_vertices(e);
+      const auto& ff = mesh.edge_faces(e);
+      t[i] = internal::edge_angle(mesh, ff[0], v[0], v[1]) - internal::edge_angle(mesh, ff[1], v[0], v[1]);
+    }
+    cache_->transport = std::move(t);
+  }
+  return *cache_->transport;
+}
+
+const N_field_operators::Vector& N_field_operators::edge_weights() const
+{
+  if(!cache_->weights)
+  {
+    const Intrinsic_mesh& mesh = this->mesh();
+    Vector w(mesh.number_of_interior_edges());
+    for(int i = 0; i < w.size(); ++i)
+    {
+      const int e = mesh.interior_edges()[i];
+      const auto& ff = mesh.edge_faces(e);
+      const double l = mesh.edge_length(e);
+      w[i] = 3 * l * l / (mesh.face_area(ff[0]) + mesh.face_area(ff[1]));
+    }
+    cache_->weights = std::move(w);
+  }
+  return *cache_->weights;
+}
+
+const N_field_operators::Vector& N_field_operators::vertex_curvatures() const
+{
+  if(!cache_->curvatures)
+  {
+    const Intrinsic_mesh& mesh = this->mesh();
+    Vector angle_sum = Vector::Zero(mesh.number_of_vertices());
+    std::vector<char> on_boundary(mesh.number_of_vertices(), 0);
+    for(int f = 0; f < mesh.number_of_faces(); ++f)
+      for(int k = 0; k < 3; ++k) angle_sum[mesh.face_vertices(f)[k]] += internal::corner_angle(mesh, f, k);
+    for(int e = 0; e < mesh.number_of_edges(); ++e)
+      if(mesh.is_boundary_edge(e))
+        for(int v : mesh.edge_vertices(e)) on_boundary[v] = 1;
+    Vector K(mesh.number_of_vertices());
+    for(int v = 0; v < K.size(); ++v)
+      K[v] = mesh.is_isolated_vertex(v) ? 0. : (on_boundary[v] ? M_PI : 2 * M_PI) - angle_sum[v];
+    cache_->curvatures = std::move(K);
+  }
+  return *cache_->curvatures;
+}
+
+const N_field_operators::Sparse_matrix& N_field_operators::S() const
+{
+  if(!cache_->S)
+  {
+    const Intrinsic_mesh& mesh = this->mesh();
+    const Vector& t = transport_angles();
+    const Vector& w = edge_weights();
+    std::vector<Eigen::Triplet<double>> entries;
+    entries.reserve(16 * static_cast<std::size_t>(t.size()) + 2 * mesh.number_of_faces());
+    Vector diagonal = Vector::Zero(mesh.number_of_faces());
+    for(int i = 0; i < t.size(); ++i)
+    {
+      const auto& ff = mesh.edge_faces(mesh.interior_edges()[i]);
+      const int f = ff[0], g = ff[1];
+      const double c = std::cos(n_ * t[i]), s = std::sin(n_ * t[i]);
+      diagonal[f] += w[i];
+      diagonal[g] += w[i];
+      // S[f,g] = -w R(n t), S[g,f] = -w R(n t)^T.
+      const double R[2][2] = {{c, -s}, {s, c}};
+      for(int a = 0; a < 2; ++a)
+        for(int b = 0; b < 2; ++b)
+        {
+          entries.emplace_back(2 * f + a, 2 * g + b, -w[i] * R[a][b]);
+          entries.emplace_back(2 * g + b, 2 * f + a, -w[i] * R[a][b]);
+        }
+    }
+    if(options_.boundary == N_field_boundary::zero)
+      for(int e = 0; e < mesh.number_of_edges(); ++e)
+        if(mesh.is_boundary_edge(e))
+        {
+          const int f = mesh.edge_faces(e)[0];
+          const double l = mesh.edge_length(e);
+          diagonal[f] += 3 * l * l / mesh.face_area(f);
+        }
+    for(int f = 0; f < mesh.number_of_faces(); ++f)
+      for(int a = 0; a < 2; ++a) entries.emplace_back(2 * f + a, 2 * f + a, diagonal[f]);
+    Sparse_matrix S(2 * mesh.number_of_faces(), 2 * mesh.number_of_faces());
+    S.setFromTriplets(entries.begin(), entries.end());
+    cache_->S = std::move(S);
+  }
+  return *cache_->S;
+}
+
+N_field_operators::Vector N_field_operators::laplacian(const Vector& z) const
+{
+  return (S() * z).cwiseQuotient(masses());
+}
+
+double N_field_operators::dirichlet_energy(const Vector& z) const { return z.dot(S() * z); }
+
+double N_field_operators::m_harmonic_energy(const Vector& z, int m) const
+{
+  if(m < 1) throw Invalid_input("m-harmonic energy: m must be at least 1 (got " + std::to_string(m) + ")");
+  Vector u = z;
+  for(int k = 1; k < m; ++k) u = laplacian(u);
+  return z.dot(S() * u);
+}
+
+const N_field_operators::Matrix& N_field_operators::kernel() const
+{
+  if(!cache_->kernel)
+  {
+    const Intrinsic_mesh& mesh = this->mesh();
+    const int nf = mesh.number_of_faces();
+    const int components = mesh.topology().number_of_components();
+    Matrix K(2 * nf, 0);
+    if(options_.boundary == N_field_boundary::free)
+    {
+      // Carry z = 1 from a root face along a spanning tree of each component, then
+      // check that every edge of the component agrees with the carried field.
+      const Vector& t = transport_angles();
+      std::vector<std::vector<std::pair<int, int>>> neighbours(nf); // (face, interior edge)
+      for(int i = 0; i < t.size(); ++i)
+      {
+        const auto& ff = mesh.edge_faces(mesh.interior_edges()[i]);
+        neighbours[ff[0]].push_back({ff[1], i});
+        neighbours[ff[1]].push_back({ff[0], i});
+      }
+      std::vector<double> phase(nf, 0.);
+      std::vector<char> reached(nf, 0);
+      std::vector<char> parallel(components, 1);
+      for(int root = 0; root < nf; ++root)
+      {
+        if(reached[root]) continue;
+        reached[root] = 1;
+        std::queue<int> queue;
+        queue.push(root);
+        while(!queue.empty())
+        {
+          const int f = queue.front();
+          queue.pop();
+          for(const auto& [g, i] : neighbours[f])
+          {
+            if(reached[g]) continue;
+            reached[g] = 1;
+            // z_first = rho^n z_second, rho = e^{i t} carries second into first.
+            const bool f_first = mesh.edge_faces(mesh.interior_edges()[i])[0] == f;
+            phase[g] = internal::wrap_angle(phase[f] + (f_first ? -n_ * t[i] : n_ * t[i]));
+            queue.push(g);
+          }
+        }
+      }
+      for(int i = 0; i < t.size(); ++i)
+      {
+        const auto& ff = mesh.edge_faces(mesh.interior_edges()[i]);
+        const double mismatch = internal::wrap_angle(phase[ff[0]] - phase[ff[1]] - n_ * t[i]);
+        if(!(std::abs(mismatch) <= options_.holonomy_tolerance)) parallel[mesh.face_component(ff[0])] = 0;
+      }
+      std::vector<int> column(components, -1);
+      int count = 0;
+      for(int c = 0; c < components; ++c)
+        if(parallel[c]) column[c] = count++;
+      K = Matrix::Zero(2 * nf, 2 * count);
+      Vector area = Vector::Zero(components);
+      for(int f = 0; f < nf; ++f) area[mesh.face_component(f)] += mesh.face_area(f);
+      for(int f = 0; f < nf; ++f)
+      {
+        const int c = mesh.face_component(f);
+        if(column[c] < 0) continue;
+        const double s = 1 / std::sqrt(area[c]);
+        const double x = s * std::cos(phase[f]), y = s * std::sin(phase[f]);
+        K(2 * f, 2 * column[c]) = x;
+        K(2 * f + 1, 2 * column[c]) = y;
+        K(2 * f, 2 * column[c] + 1) = -y; // J p
+        K(2 * f + 1, 2 * column[c] + 1) = x;
+      }
+    }
+    cache_->kernel = std::move(K);
+  }
+  return *cache_->kernel;
+}
+
+N_field_operators::Vector N_field_operators::from_vectors(const Vector& vectors) const
+{
+  const Eigen::Index nf = vectors.size() / 2;
+  Vector z(vectors.size());
+  for(Eigen::Index f = 0; f < nf; ++f)
+  {
+    const double a = vectors[2 * f], b = vectors[2 * f + 1];
+    const double r = std::hypot(a, b);
+    const std::complex<double> w = r > 0 ? std::polar(r, n_ * std::atan2(b, a)) : std::complex<double>(0, 0);
+    z[2 * f] = w.real();
+    z[2 * f + 1] = w.imag();
+  }
+  return z;
+}
+
+N_field_operators::Vector N_field_operators::to_vectors(const Vector& z) const { return to_vectors(z, 0); }
+
+N_field_operators::Vector N_field_operators::to_vectors(const Vector& z, int j) const
+{
+  if(j < 0 || j >= n_)
+    throw Invalid_input("n-field: vector " + std::to_string(j) + " asked of a field of " + std::to_string(n_));
+  const Eigen::Index nf = z.size() / 2;
+  Vector u(z.size());
+  for(Eigen::Index f = 0; f < nf; ++f)
+  {
+    const double r = std::hypot(z[2 * f], z[2 * f + 1]);
+    const double theta = std::atan2(z[2 * f + 1], z[2 * f]) / n_ + 2 * M_PI * j / n_;
+    u[2 * f] = r * std::cos(theta);
+    u[2 * f + 1] = r * std::sin(theta);
+  }
+  return u;
+}
+
+N_field_operators::Vector N_field_operators::normalized(const Vector& z) const
+{
+  Vector u(z.size());
+  for(Eigen::Index f = 0; f < z.size() / 2; ++f)
+  {
+    const double r = std::hypot(z[2 * f], z[2 * f + 1]);
+    u[2 * f] = r > 0 ? z[2 * f] / r : 0.;
+    u[2 * f + 1] = r > 0 ? z[2 * f + 1] / r : 0.;
+  }
+  return u;
+}
+
+} // namespace Tangent_vector_fields
+} // namespace CGAL
