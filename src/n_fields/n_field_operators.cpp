@@ -4,6 +4,7 @@
 #include <CGAL/Tangent_vector_fields/N_field_operators.h>
 #include <CGAL/Tangent_vector_fields/errors.h>
 #include <CGAL/Tangent_vector_fields/internal/n_field_geometry.h>
+#include <CGAL/Tangent_vector_fields/internal/singularity_connection.h>
 
 #include <cmath>
 #include <complex>
@@ -56,9 +57,10 @@ double wrap_angle(double a)
 
 struct N_field_operators::Cache
 {
-  std::optional<Vector> transport, weights, curvatures;
+  std::optional<Vector> transport, connection, weights, curvatures;
   std::optional<Sparse_matrix> S;
   std::optional<Matrix> kernel;
+  std::optional<std::vector<int>> vertex_corner; // 3 f + k of one corner of each vertex, -1: none
 };
 
 N_field_operators::N_field_operators(std::shared_ptr<const Operator_matrices> operators, int n,
@@ -67,6 +69,18 @@ N_field_operators::N_field_operators(std::shared_ptr<const Operator_matrices> op
 {
   if(!operators_) throw Invalid_input("n-field operators: no operators given");
   if(n < 1) throw Invalid_input("n-field operators: n must be at least 1 (got " + std::to_string(n) + ")");
+  const Intrinsic_mesh& m = mesh();
+  std::vector<char> prescribed(m.number_of_vertices(), 0);
+  for(const auto& [v, k] : options_.singularities)
+  {
+    const std::string what = "n-field operators: the singularity of index " + std::to_string(k) + "/" +
+                             std::to_string(n) + " at vertex " + std::to_string(v);
+    if(v < 0 || v >= m.number_of_vertices()) throw Invalid_input(what + ": no such vertex");
+    if(prescribed[v]) throw Invalid_input(what + ": the vertex is prescribed twice");
+    prescribed[v] = 1;
+    if(m.is_isolated_vertex(v)) throw Invalid_input(what + ": the vertex is in no face");
+    if(vertex_fan(v).on_boundary) throw Invalid_input(what + ": the vertex is on the boundary");
+  }
 }
 
 N_field_operators::~N_field_operators() = default;
@@ -87,6 +101,17 @@ const N_field_operators::Vector& N_field_operators::transport_angles() const
     cache_->transport = std::move(t);
   }
   return *cache_->transport;
+}
+
+const N_field_operators::Vector& N_field_operators::connection_angles() const
+{
+  if(!cache_->connection)
+  {
+    Vector t = transport_angles();
+    if(!options_.singularities.empty()) t += internal::singularity_connection(*this);
+    cache_->connection = std::move(t);
+  }
+  return *cache_->connection;
 }
 
 const N_field_operators::Vector& N_field_operators::edge_weights() const
@@ -132,7 +157,7 @@ const N_field_operators::Sparse_matrix& N_field_operators::S() const
   if(!cache_->S)
   {
     const Intrinsic_mesh& mesh = this->mesh();
-    const Vector& t = transport_angles();
+    const Vector& t = connection_angles();
     const Vector& w = edge_weights();
     std::vector<Eigen::Triplet<double>> entries;
     entries.reserve(16 * static_cast<std::size_t>(t.size()) + 2 * mesh.number_of_faces());
@@ -170,6 +195,51 @@ const N_field_operators::Sparse_matrix& N_field_operators::S() const
   return *cache_->S;
 }
 
+double N_field_operators::transport_angle(int e, int from) const
+{
+  const double t = transport_angles()[mesh().interior_edge_index(e)];
+  // transport_angles() carries from the edge's second face into its first.
+  return mesh().edge_faces(e)[1] == from ? t : -t;
+}
+
+N_field_operators::Vertex_fan N_field_operators::vertex_fan(int v) const
+{
+  const Intrinsic_mesh& mesh = this->mesh();
+  if(!cache_->vertex_corner)
+  {
+    std::vector<int> corner(mesh.number_of_vertices(), -1);
+    for(int f = 0; f < mesh.number_of_faces(); ++f)
+      for(int k = 0; k < 3; ++k) corner[mesh.face_vertices(f)[k]] = 3 * f + k;
+    cache_->vertex_corner = std::move(corner);
+  }
+  Vertex_fan fan;
+  int c = (*cache_->vertex_corner)[v];
+  if(c < 0) return fan;
+  // Counter-clockwise around v, face f (v at corner k) is followed across local edge k+1 and
+  // preceded across local edge k+2.  Around a boundary vertex, first walk back to the start.
+  auto step = [&](int corner, int local_edge) {
+    const int f = corner / 3, e = mesh.face_edges(f)[(corner % 3 + local_edge) % 3];
+    if(mesh.is_boundary_edge(e)) return -1;
+    const auto& ff = mesh.edge_faces(e);
+    const int g = ff[0] == f ? ff[1] : ff[0];
+    return 3 * g + internal::local_corner(mesh, g, v);
+  };
+  const int start = c;
+  for(int back = step(c, 2); back >= 0 && back != start; back = step(c, 2)) c = back;
+  fan.on_boundary = step(c, 2) < 0;
+  const int first = c;
+  do
+  {
+    fan.faces.push_back(c / 3);
+    const int e = mesh.face_edges(c / 3)[(c % 3 + 1) % 3];
+    const int next = step(c, 1);
+    if(next < 0) break;
+    fan.edges.push_back(e);
+    c = next;
+  } while(c != first);
+  return fan;
+}
+
 N_field_operators::Vector N_field_operators::laplacian(const Vector& z) const
 {
   return (S() * z).cwiseQuotient(masses());
@@ -197,7 +267,7 @@ const N_field_operators::Matrix& N_field_operators::kernel() const
     {
       // Carry z = 1 from a root face along a spanning tree of each component, then
       // check that every edge of the component agrees with the carried field.
-      const Vector& t = transport_angles();
+      const Vector& t = connection_angles();
       std::vector<std::vector<std::pair<int, int>>> neighbours(nf); // (face, interior edge)
       for(int i = 0; i < t.size(); ++i)
       {

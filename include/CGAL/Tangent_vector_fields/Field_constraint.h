@@ -133,6 +133,10 @@ struct Constraint_row
 /// The values `c` of the rows of `constraint`, checked as `constraint_rows` checks them
 /// but without building the rows (for value edits).
 std::vector<double> constraint_values(const Intrinsic_mesh& mesh, const Field_constraint& constraint);
+inline std::vector<double> constraint_values(const Operator_matrices& operators, const Field_constraint& constraint)
+{
+  return constraint_values(operators.mesh(), constraint);
+}
 
 /// The rows of `constraint` (`rows()` of them).
 /// \throws Invalid_input for an element index out of range, non-finite numbers,

@@ -15,6 +15,8 @@
 #include <Eigen/SparseCore>
 
 #include <memory>
+#include <utility>
+#include <vector>
 
 namespace CGAL {
 namespace Tangent_vector_fields {
@@ -33,6 +35,9 @@ struct N_field_options
   /// they span the kernel of `S_n`.  Rounding leaves ~1e-13 on 1M faces; a real
   /// holonomy is at least the smallest `n K_v` mod `2 pi` of a vertex.
   double holonomy_tolerance = 1e-8;
+  /// Prescribed singularities `(vertex, k)`: index `k / n` at an interior vertex.  They
+  /// change the connection (below), so that the smooth fields of `S_n` have them.
+  std::vector<std::pair<int, int>> singularities;
 };
 
 /// \brief Operators on n-direction fields of a triangle mesh.
@@ -47,7 +52,18 @@ struct N_field_options
 /// Interior edge `e` with faces `f = edge_faces(e)[0]`, `g = edge_faces(e)[1]`: if
 /// `a_f`, `a_g` are the angles of the edge in the two frames, a vector at angle `t` in
 /// `g` is at angle `t + a_f - a_g` in `f` (`rho_fg = e^{i (a_f - a_g)}`), and an n-field
-/// `z_g` is `rho_fg^n z_g` there.  The first-order energy is
+/// `z_g` is `rho_fg^n z_g` there.
+///
+/// Prescribed singularities (a modified connection, in the manner of trivial connections):
+/// each interior edge's transport turns by an extra `delta_e` so that the connection's
+/// holonomy around a prescribed vertex becomes `2 pi k / n` -- a field that is smooth for
+/// this connection turns by `2 pi k` (its power) around the vertex, index k/n -- while every
+/// other vertex keeps its angle defect, less an equal share per unit area of what the
+/// prescribed indices take from the total `2 pi chi` on a closed component (on a component
+/// with boundary the boundary takes it).  `delta` is the smallest change in the norm
+/// `sum_e w_e delta_e^2`: one Poisson solve on the vertices.  The energy is then
+/// measured against the modified connection; the index (`n_field_indices`) always against
+/// the surface's own.  The first-order energy is
 /// `E_D(z) = sum_e w_e |z_f - rho_fg^n z_g|^2`, `w_e = 3 |e|^2 / (A_f + A_g)`, the
 /// matrix `S_n` (free boundary by default, see `N_field_boundary`).  Matrices are built
 /// on first request and cached; not thread-safe while they are built.
@@ -58,7 +74,8 @@ public:
   typedef Eigen::VectorXd Vector;
   typedef Eigen::MatrixXd Matrix;
 
-  /// \throws Invalid_input if `n < 1`.
+  /// \throws Invalid_input if `n < 1`, or a prescribed singularity is not at an interior
+  ///         vertex, or a vertex is prescribed twice.
   N_field_operators(std::shared_ptr<const Operator_matrices> operators, int n,
                     const N_field_options& options = N_field_options());
   ~N_field_operators();
@@ -74,6 +91,9 @@ public:
   /// `a_f - a_g` per interior edge (in the order of `Intrinsic_mesh::interior_edges`):
   /// the angle by which a vector turns when carried from `g` into `f` (not times n).
   const Vector& transport_angles() const;
+  /// The transport angles of the connection `S_n` uses: `transport_angles()` plus the
+  /// `delta_e` of the prescribed singularities (equal to it without them).
+  const Vector& connection_angles() const;
   /// `w_e` per interior edge.
   const Vector& edge_weights() const;
   /// Per vertex: the angle defect `2 pi - sum of corner angles` at interior vertices, the
@@ -81,6 +101,23 @@ public:
   /// vertices in no face.  Their sum is `2 pi chi` (Gauss-Bonnet).
   const Vector& vertex_curvatures() const;
 
+  /// Faces around a vertex, counter-clockwise; `edges[i]` joins `faces[i]` and `faces[i+1]`
+  /// (and, around an interior vertex, the last joins `faces.back()` and `faces[0]`).  Around a
+  /// boundary vertex the fan runs from the face on the outgoing boundary edge to the face on
+  /// the incoming one.  Empty for a vertex in no face.
+  struct Vertex_fan
+  {
+    std::vector<int> faces;
+    std::vector<int> edges;
+    bool on_boundary = false;
+  };
+  Vertex_fan vertex_fan(int v) const;
+  /// The angle by which a vector turns when carried from face `from` across interior edge `e`
+  /// into the other face (`transport_angles()` of `e`, with the sign of the direction).
+  double transport_angle(int e, int from) const;
+
+  /// Face areas (`nf`).
+  const Vector& face_areas() const { return operators_->face_areas(); }
   /// `S_n`, `2nf x 2nf`, symmetric positive semi-definite.
   const Sparse_matrix& S() const;
   /// The mass `MX` (each face area twice), `2nf`.

@@ -5,10 +5,10 @@
 #define CGAL_TANGENT_VECTOR_FIELDS_SPLINE_SOLVER_H
 
 /// \file Spline_solver.h
-/// Tangent vector field splines (SPEC 7): minimise `E_B(x) + omega E_D(x)` subject to
-/// hard constraints `C~ x = c`.  This header holds what the reduced and the full
-/// solver share: the constraint set and its edits, the small range-space system,
-/// and the report.
+/// Splines (SPEC 7, and SPEC 10 for n-fields): minimise `E_B(x) + omega E_D(x)` subject
+/// to hard constraints `C~ x = c`.  This header holds what every reduced and full solver
+/// shares, for vector fields and n-fields alike: the constraint set and its edits, the
+/// small range-space system, and the report.
 
 #include <CGAL/Tangent_vector_fields/Field_constraint.h>
 #include <CGAL/Tangent_vector_fields/internal/Constraint_system.h>
@@ -65,7 +65,13 @@ struct Spline_report
   std::vector<std::string> warnings;
 };
 
-/// \brief Common part of the tangent vector field spline solvers.
+/// \brief Common part of the spline solvers, for a kind of constraint and the operators
+/// of the fields it constrains (vector fields: `Spline_solver`; n-fields: `N_field_spline_solver`).
+///
+/// `Constraint` provides `describe()` and `same_rows_as(other)`; the free functions
+/// `constraint_rows(const Operators&, const Constraint&)` and
+/// `constraint_values(const Operators&, const Constraint&)` give its rows and their values;
+/// `Operators` provides `face_areas()`.
 ///
 /// The range-space method: each constraint row `r_i` is pulled back once to
 /// `y_i = Q^+ r_i^T` (the energy's pseudo-inverse on the fields orthogonal to the
@@ -80,25 +86,26 @@ struct Spline_report
 /// Editing: `change` with the same kind and place of constraint only changes values
 /// (one back-substitution at the next solve); `add` appends rows to the small Cholesky
 /// factor, `remove` re-triangularises it: neither refactors from scratch.
-class Spline_solver
+template <class Constraint, class Operators>
+class Basic_spline_solver
 {
 public:
-  virtual ~Spline_solver();
+  virtual ~Basic_spline_solver();
 
   /// Adds a constraint.
   /// \throws Invalid_input for a malformed constraint (see `constraint_rows`).
   /// \throws Infeasible_constraints if its rows depend on those already present.
-  Constraint_id add(const Field_constraint& constraint);
+  Constraint_id add(const Constraint& constraint);
   /// Adds several constraints with one batch of pull-backs (faster for the full solver).
   /// All or nothing: on an exception none of them is added.
-  std::vector<Constraint_id> add(const std::vector<Field_constraint>& constraints);
+  std::vector<Constraint_id> add(const std::vector<Constraint>& constraints);
   /// Replaces a constraint.  Same kind and place: only the values change.
-  void change(Constraint_id id, const Field_constraint& constraint);
+  void change(Constraint_id id, const Constraint& constraint);
   void remove(Constraint_id id);
   void clear();
 
   bool contains(Constraint_id id) const { return entries_.count(id) > 0; }
-  const Field_constraint& constraint(Constraint_id id) const;
+  const Constraint& constraint(Constraint_id id) const;
   std::vector<Constraint_id> constraint_ids() const;
   int number_of_constraints() const { return static_cast<int>(entries_.size()); }
   int number_of_rows() const { return static_cast<int>(rows_.size()); }
@@ -111,7 +118,7 @@ public:
   /// `omega` for the mesh as given (`options.omega / area`).
   double effective_omega() const { return omega_; }
   const Spline_options& options() const { return options_; }
-  const Operator_matrices& operators() const { return *operators_; }
+  const Operators& operators() const { return *operators_; }
 
   /// The spline as frame coordinates (`2nf`); solves if constraints changed.
   virtual Eigen::VectorXd field() const = 0;
@@ -120,7 +127,7 @@ public:
   const Spline_report& report() const;
 
 protected:
-  Spline_solver(std::shared_ptr<const Operator_matrices> operators, int harmonic_dimension,
+  Basic_spline_solver(std::shared_ptr<const Operators> operators, int harmonic_dimension,
                 const Spline_options& options);
 
   struct Row
@@ -144,11 +151,13 @@ protected:
   virtual std::string dependency_hint() const { return std::string(); }
   /// Called when `omega` changed, before the rows are pulled back again.
   virtual void energy_changed() {}
+  /// What the zero-energy fields are called in messages ("harmonic", "parallel").
+  virtual std::string kernel_noun() const { return "harmonic"; }
 
   /// The solution in the solver's space (coefficients or frame coordinates).
   const Eigen::VectorXd& solution() const;
 
-  std::shared_ptr<const Operator_matrices> operators_;
+  std::shared_ptr<const Operators> operators_;
   Spline_options options_;
   double omega_ = 0;          // effective omega for the mesh as given
   double harmonic_scale_ = 0; // energy of a unit field of frequency 1/area
@@ -157,12 +166,12 @@ protected:
 private:
   struct Entry
   {
-    Field_constraint constraint;
+    Constraint constraint;
     int first_row;
     int row_count;
   };
   // Pulls back and appends the rows of `constraints`, under the ids given; all or nothing.
-  void insert(const std::vector<Field_constraint>& constraints, const std::vector<Constraint_id>& ids);
+  void insert(const std::vector<Constraint>& constraints, const std::vector<Constraint_id>& ids);
   void set_scales();
   void solve() const;
   void make_report() const;
@@ -176,6 +185,10 @@ private:
   mutable Eigen::VectorXd solution_;
   mutable Spline_report report_;
 };
+
+/// The tangent vector field spline solvers' common part.
+typedef Basic_spline_solver<Field_constraint, Operator_matrices> Spline_solver;
+extern template class Basic_spline_solver<Field_constraint, Operator_matrices>;
 
 } // namespace Tangent_vector_fields
 } // namespace CGAL

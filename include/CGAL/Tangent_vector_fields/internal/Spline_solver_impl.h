@@ -1,0 +1,293 @@
+// Copyright (c) 2026 The Tangent_vector_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TANGENT_VECTOR_FIELDS_INTERNAL_SPLINE_SOLVER_IMPL_H
+#define CGAL_TANGENT_VECTOR_FIELDS_INTERNAL_SPLINE_SOLVER_IMPL_H
+
+// The definitions of Basic_spline_solver, included only by the translation units that
+// instantiate it (src/design/spline_solver.cpp, src/n_fields/n_field_spline_solver.cpp).
+
+#include <CGAL/Tangent_vector_fields/Spline_solver.h>
+#include <CGAL/Tangent_vector_fields/errors.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace CGAL {
+namespace Tangent_vector_fields {
+
+template <class Constraint, class Operators>
+Basic_spline_solver<Constraint, Operators>::Basic_spline_solver(std::shared_ptr<const Operators> operators, int harmonic_dimension,
+                             const Spline_options& options)
+  : operators_(std::move(operators)), options_(options), harmonic_dimension_(harmonic_dimension)
+{
+  if(!operators_) throw Invalid_input("spline solver: no operators given");
+  if(!std::isfinite(options.omega) || options.omega < 0)
+    throw Invalid_input("the tension omega must be finite and non-negative");
+  if(!std::isfinite(options.harmonic_eigenvalue) || options.harmonic_eigenvalue < 0)
+    throw Invalid_input("the harmonic eigenvalue must be finite and non-negative");
+  set_scales();
+  system_ = std::make_unique<internal::Constraint_system>(harmonic_dimension_, harmonic_scale_, harmonic_penalty_);
+}
+
+template <class Constraint, class Operators>
+Basic_spline_solver<Constraint, Operators>::~Basic_spline_solver() = default;
+
+template <class Constraint, class Operators>
+void Basic_spline_solver<Constraint, Operators>::set_scales()
+{
+  // The energy is E_B + omega E_D with omega given on the unit-area mesh: lambda
+  // scales as 1/area, so omega as 1/area too.
+  const double area = operators_->face_areas().sum();
+  omega_ = options_.omega / area;
+  const double lambda = 1 / area;
+  harmonic_scale_ = lambda * lambda + omega_ * lambda;
+  const double lambda_h = options_.harmonic_eigenvalue / area;
+  harmonic_penalty_ = lambda_h * lambda_h + omega_ * lambda_h;
+}
+
+template <class Constraint, class Operators>
+Constraint_id Basic_spline_solver<Constraint, Operators>::add(const Constraint& constraint)
+{
+  return add(std::vector<Constraint>{constraint}).front();
+}
+
+template <class Constraint, class Operators>
+std::vector<Constraint_id> Basic_spline_solver<Constraint, Operators>::add(const std::vector<Constraint>& constraints)
+{
+  std::vector<Constraint_id> ids;
+  for(std::size_t i = 0; i < constraints.size(); ++i) ids.push_back(next_id_ + static_cast<int>(i));
+  insert(constraints, ids);
+  next_id_ += static_cast<int>(constraints.size());
+  return ids;
+}
+
+template <class Constraint, class Operators>
+void Basic_spline_solver<Constraint, Operators>::insert(const std::vector<Constraint>& constraints, const std::vector<Constraint_id>& ids)
+{
+  // Rows first: a malformed constraint throws before anything changes.
+  std::vector<Row> rows;
+  std::vector<int> owner;
+  for(std::size_t i = 0; i < constraints.size(); ++i)
+    for(Constraint_row& r : constraint_rows(*operators_, constraints[i]))
+    {
+      Row row;
+      row.row = std::move(r);
+      rows.push_back(std::move(row));
+      owner.push_back(static_cast<int>(i));
+    }
+  pull_back(rows);
+
+  const int first = number_of_rows();
+  for(std::size_t j = 0; j < rows.size(); ++j)
+  {
+    const int n = number_of_rows();
+    Eigen::VectorXd k(n);
+    for(int i = 0; i < n; ++i) k[i] = apply(rows_[i], rows[j].y);
+    const double kappa = apply(rows[j], rows[j].y);
+    const double independence = system_->independence(k, kappa);
+    if(!(independence >= options_.dependency_tolerance))
+    {
+      // The value the other rows already imply for this one: K^-1 k combines them.
+      double implied = 0;
+      if(n > 0)
+      {
+        const Eigen::VectorXd alpha = system_->solve_K(k);
+        for(int i = 0; i < n; ++i) implied += alpha[i] * rows_[i].row.value;
+      }
+      const double residual = std::abs(rows[j].row.value - implied);
+      const std::string hint = dependency_hint();
+      // All or nothing: take back the rows of this call.
+      if(n > first) system_->remove(first, n - first);
+      rows_.resize(first);
+      std::ostringstream s;
+      s << "constraint \"" << constraints[owner[j]].describe() << "\" depends on the constraints already set (sin^2 "
+        << independence << " < tolerance " << options_.dependency_tolerance << "); they imply the value " << implied
+        << " where " << rows[j].row.value << " is asked: residual " << residual;
+      if(kappa == 0) s << " (the row is zero on every field the solver can represent)";
+      if(!hint.empty()) s << "; " << hint;
+      throw Infeasible_constraints(s.str(), independence, residual);
+    }
+    system_->append(k, kappa, rows[j].harmonic);
+    rows_.push_back(std::move(rows[j]));
+  }
+  int row = first;
+  for(std::size_t i = 0; i < constraints.size(); ++i)
+  {
+    const int count = static_cast<int>(std::count(owner.begin(), owner.end(), static_cast<int>(i)));
+    entries_[ids[i]] = Entry{constraints[i], row, count};
+    row += count;
+  }
+  solved_ = false;
+}
+
+
+template <class Constraint, class Operators>
+void Basic_spline_solver<Constraint, Operators>::change(Constraint_id id, const Constraint& constraint)
+{
+  auto it = entries_.find(id);
+  if(it == entries_.end()) throw Invalid_input("no constraint with id " + std::to_string(id));
+  Entry& entry = it->second;
+  if(entry.constraint.same_rows_as(constraint))
+  {
+    // Only the values change: no new rows (the fast path of interactive edits).
+    const std::vector<double> values = constraint_values(*operators_, constraint);
+    for(int k = 0; k < entry.row_count; ++k) rows_[entry.first_row + k].row.value = values[k];
+    entry.constraint = constraint;
+    solved_ = false;
+    return;
+  }
+  const Constraint old = entry.constraint;
+  remove(id);
+  try
+  {
+    insert({constraint}, {id});
+  }
+  catch(...)
+  {
+    insert({old}, {id}); // it fitted before
+    throw;
+  }
+}
+
+template <class Constraint, class Operators>
+void Basic_spline_solver<Constraint, Operators>::remove(Constraint_id id)
+{
+  auto it = entries_.find(id);
+  if(it == entries_.end()) throw Invalid_input("no constraint with id " + std::to_string(id));
+  const int first = it->second.first_row, count = it->second.row_count;
+  system_->remove(first, count);
+  rows_.erase(rows_.begin() + first, rows_.begin() + first + count);
+  entries_.erase(it);
+  for(auto& e : entries_)
+    if(e.second.first_row > first) e.second.first_row -= count;
+  solved_ = false;
+}
+
+template <class Constraint, class Operators>
+void Basic_spline_solver<Constraint, Operators>::clear()
+{
+  entries_.clear();
+  rows_.clear();
+  system_ = std::make_unique<internal::Constraint_system>(harmonic_dimension_, harmonic_scale_, harmonic_penalty_);
+  solved_ = false;
+}
+
+template <class Constraint, class Operators>
+void Basic_spline_solver<Constraint, Operators>::set_omega(double omega)
+{
+  if(!std::isfinite(omega) || omega < 0) throw Invalid_input("the tension omega must be finite and non-negative");
+  options_.omega = omega;
+  set_scales();
+  energy_changed();
+  // Every pull-back depends on the energy: rebuild the small system in the same order.
+  std::vector<std::pair<Constraint_id, Entry>> entries(entries_.begin(), entries_.end());
+  std::sort(entries.begin(), entries.end(),
+            [](const auto& a, const auto& b) { return a.second.first_row < b.second.first_row; });
+  entries_.clear();
+  rows_.clear();
+  system_ = std::make_unique<internal::Constraint_system>(harmonic_dimension_, harmonic_scale_, harmonic_penalty_);
+  std::vector<Constraint> constraints;
+  std::vector<Constraint_id> ids;
+  for(const auto& e : entries)
+  {
+    constraints.push_back(e.second.constraint);
+    ids.push_back(e.first);
+  }
+  insert(constraints, ids);
+}
+
+template <class Constraint, class Operators>
+const Constraint& Basic_spline_solver<Constraint, Operators>::constraint(Constraint_id id) const
+{
+  auto it = entries_.find(id);
+  if(it == entries_.end()) throw Invalid_input("no constraint with id " + std::to_string(id));
+  return it->second.constraint;
+}
+
+template <class Constraint, class Operators>
+std::vector<Constraint_id> Basic_spline_solver<Constraint, Operators>::constraint_ids() const
+{
+  std::vector<Constraint_id> ids;
+  for(const auto& e : entries_) ids.push_back(e.first);
+  return ids;
+}
+
+template <class Constraint, class Operators>
+const Eigen::VectorXd& Basic_spline_solver<Constraint, Operators>::solution() const
+{
+  if(!solved_) solve();
+  return solution_;
+}
+
+template <class Constraint, class Operators>
+const Spline_report& Basic_spline_solver<Constraint, Operators>::report() const
+{
+  if(!solved_) solve();
+  if(!reported_) make_report();
+  return report_;
+}
+
+template <class Constraint, class Operators>
+void Basic_spline_solver<Constraint, Operators>::solve() const
+{
+  const int n = number_of_rows();
+  Eigen::VectorXd c(n);
+  for(int i = 0; i < n; ++i) c[i] = rows_[i].row.value;
+  Eigen::VectorXd mu, z;
+  system_->solve(c, mu, z);
+  solution_ = Eigen::VectorXd::Zero(space_dimension());
+  for(int i = 0; i < n; ++i) solution_ += mu[i] * rows_[i].y;
+  if(z.size() > 0) add_harmonic(z, solution_);
+  if(!solution_.allFinite()) throw Numerical_failure("the spline solve produced non-finite values");
+  solved_ = true;
+  reported_ = false;
+}
+
+// The report costs as much as the solve (a pass over every row, the energy): it is
+// made only when asked for, not on every edit.
+template <class Constraint, class Operators>
+void Basic_spline_solver<Constraint, Operators>::make_report() const
+{
+  const int n = number_of_rows();
+  Spline_report r;
+  r.constraints = number_of_constraints();
+  r.rows = n;
+  r.smallest_independence = system_->smallest_independence();
+  r.undetermined_harmonic = n > 0 ? system_->undetermined_harmonic() : harmonic_dimension_;
+  double largest = 0, residual = 0;
+  for(int i = 0; i < n; ++i)
+  {
+    const double c = rows_[i].row.value;
+    largest = std::max(largest, std::abs(c));
+    residual = std::max(residual, std::abs(apply(rows_[i], solution_) - c));
+  }
+  r.constraint_residual = largest > 0 ? residual / largest : residual;
+  r.energy = energy(solution_);
+  if(n > 0 && r.smallest_independence < options_.warning_tolerance)
+  {
+    std::ostringstream s;
+    s << "nearly dependent constraints (sin^2 " << r.smallest_independence
+      << "): meeting all of them makes the field swing wildly between them";
+    r.warnings.push_back(s.str());
+  }
+  if(r.undetermined_harmonic > 0)
+    r.warnings.push_back(std::to_string(r.undetermined_harmonic) + " of " + std::to_string(harmonic_dimension_) + " " +
+                         kernel_noun() + " directions are not determined by the constraints and set to zero");
+  if(n > 0 && system_->harmonic_determination() < 1e-6)
+  {
+    std::ostringstream s;
+    s << "the " << kernel_noun() << " part is only weakly determined by the constraints (" << system_->harmonic_determination()
+      << " of the energy scale): it may be large";
+    r.warnings.push_back(s.str());
+  }
+  if(!std::isfinite(r.energy)) throw Numerical_failure("the spline's energy is not finite");
+  report_ = r;
+  reported_ = true;
+}
+
+} // namespace Tangent_vector_fields
+} // namespace CGAL
+
+#endif

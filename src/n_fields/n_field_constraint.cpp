@@ -1,0 +1,184 @@
+// Copyright (c) 2026 The Tangent_vector_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#include <CGAL/Tangent_vector_fields/N_field_constraint.h>
+#include <CGAL/Tangent_vector_fields/errors.h>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <sstream>
+
+namespace CGAL {
+namespace Tangent_vector_fields {
+
+namespace {
+
+[[noreturn]] void refuse(const N_field_constraint& c, int n, const std::string& why)
+{
+  std::ostringstream s;
+  s << "n-field constraint \"" << c.describe() << "\" (n = " << n << "): " << why;
+  throw Invalid_input(s.str());
+}
+
+// The power e^{i n theta} (times the length) of a vector given in 3D, in its face's frame.
+std::complex<double> face_power(const N_field_operators& ops, const N_field_constraint& c, bool unit)
+{
+  const Intrinsic_mesh& mesh = ops.mesh();
+  if(c.face < 0 || c.face >= mesh.number_of_faces()) refuse(c, ops.n(), "no such face");
+  for(double x : c.vector)
+    if(!std::isfinite(x)) refuse(c, ops.n(), "the vector is not finite");
+  const double length = std::sqrt(c.vector[0] * c.vector[0] + c.vector[1] * c.vector[1] + c.vector[2] * c.vector[2]);
+  if(length == 0 && c.kind == N_field_constraint_kind::vector) return {0, 0};
+  if(length == 0) refuse(c, ops.n(), "the direction is zero");
+  // Scale first: a huge but finite vector must not overflow in the projection.
+  const std::array<double, 3> unit_vector = {c.vector[0] / length, c.vector[1] / length, c.vector[2] / length};
+  const auto ab = mesh.to_frame(c.face, unit_vector);
+  const double in_plane = std::hypot(ab[0], ab[1]);
+  if(!(in_plane > 1e-12)) refuse(c, ops.n(), "the vector is normal to its face");
+  return std::polar(unit ? 1. : length * in_plane, ops.n() * std::atan2(ab[1], ab[0]));
+}
+
+struct Ring
+{
+  N_field_operators::Vertex_fan fan;
+  double phi = 0; // turning per face
+};
+
+Ring singularity_ring(const N_field_operators& ops, const N_field_constraint& c)
+{
+  const Intrinsic_mesh& mesh = ops.mesh();
+  if(c.vertex < 0 || c.vertex >= mesh.number_of_vertices()) refuse(c, ops.n(), "no such vertex");
+  Ring ring;
+  ring.fan = ops.vertex_fan(c.vertex);
+  if(ring.fan.faces.empty()) refuse(c, ops.n(), "the vertex is in no face");
+  if(ring.fan.on_boundary) refuse(c, ops.n(), "the vertex is on the boundary");
+  const int m = static_cast<int>(ring.fan.faces.size());
+  ring.phi = (2 * M_PI * c.index - ops.n() * ops.vertex_curvatures()[c.vertex]) / m;
+  if(!(std::abs(ring.phi) < M_PI))
+    refuse(c, ops.n(), "its " + std::to_string(m) + " faces cannot show a turning of " + std::to_string(c.index) +
+                           " periods (at most " + std::to_string((m - 1) / 2) + " on a flat vertex)");
+  return ring;
+}
+
+} // namespace
+
+bool N_field_constraint::same_rows_as(const N_field_constraint& other) const
+{
+  if(kind != other.kind) return false;
+  switch(kind)
+  {
+  case N_field_constraint_kind::vector: return face == other.face;
+  case N_field_constraint_kind::direction: return false; // the row itself holds the direction
+  case N_field_constraint_kind::singularity:
+    return vertex == other.vertex && index == other.index && face == other.face;
+  }
+  return false;
+}
+
+std::string N_field_constraint::describe() const
+{
+  std::ostringstream s;
+  switch(kind)
+  {
+  case N_field_constraint_kind::vector:
+    s << "vector (" << vector[0] << ", " << vector[1] << ", " << vector[2] << ") in face " << face;
+    break;
+  case N_field_constraint_kind::direction:
+    s << "direction (" << vector[0] << ", " << vector[1] << ", " << vector[2] << ") in face " << face;
+    break;
+  case N_field_constraint_kind::singularity:
+    s << "singularity of index " << index << "/n at vertex " << vertex;
+    if(face >= 0) s << " anchored by (" << vector[0] << ", " << vector[1] << ", " << vector[2] << ") in face " << face;
+    break;
+  }
+  return s.str();
+}
+
+std::vector<double> constraint_values(const N_field_operators& ops, const N_field_constraint& c)
+{
+  switch(c.kind)
+  {
+  case N_field_constraint_kind::vector:
+  {
+    const std::complex<double> w = face_power(ops, c, false);
+    return {w.real(), w.imag()};
+  }
+  case N_field_constraint_kind::direction: face_power(ops, c, true); return {0.};
+  case N_field_constraint_kind::singularity:
+  {
+    std::vector<double> values(2 * (singularity_ring(ops, c).fan.faces.size() - 1), 0.);
+    if(c.is_anchored())
+    {
+      const std::complex<double> w = face_power(ops, c, false);
+      values.push_back(w.real());
+      values.push_back(w.imag());
+    }
+    return values;
+  }
+  }
+  return {};
+}
+
+std::vector<Constraint_row> constraint_rows(const N_field_operators& ops, const N_field_constraint& c)
+{
+  std::vector<Constraint_row> rows;
+  switch(c.kind)
+  {
+  case N_field_constraint_kind::vector:
+  {
+    const std::complex<double> w = face_power(ops, c, false);
+    rows.resize(2);
+    rows[0].entries = {{2 * c.face, 1.}};
+    rows[0].value = w.real();
+    rows[1].entries = {{2 * c.face + 1, 1.}};
+    rows[1].value = w.imag();
+    break;
+  }
+  case N_field_constraint_kind::direction:
+  {
+    // Im(conj(w) z) = Re(w) Im(z) - Im(w) Re(z) = 0.
+    const std::complex<double> w = face_power(ops, c, true);
+    rows.resize(1);
+    rows[0].entries = {{2 * c.face, -w.imag()}, {2 * c.face + 1, w.real()}};
+    break;
+  }
+  case N_field_constraint_kind::singularity:
+  {
+    // z_{i+1} - e^{i phi} rho_i^n z_i = 0 for consecutive faces (the closing relation is implied).
+    const Ring ring = singularity_ring(ops, c);
+    const auto& faces = ring.fan.faces;
+    for(std::size_t i = 0; i + 1 < faces.size(); ++i)
+    {
+      const int f = faces[i], g = faces[i + 1];
+      const std::complex<double> a =
+          std::polar(1., ring.phi + ops.n() * ops.transport_angle(ring.fan.edges[i], f));
+      // Re: x_g - (Re a x_f - Im a y_f);  Im: y_g - (Im a x_f + Re a y_f).
+      Constraint_row re, im;
+      re.entries = {{2 * g, 1.}, {2 * f, -a.real()}, {2 * f + 1, a.imag()}};
+      im.entries = {{2 * g + 1, 1.}, {2 * f, -a.imag()}, {2 * f + 1, -a.real()}};
+      rows.push_back(std::move(re));
+      rows.push_back(std::move(im));
+    }
+    if(c.is_anchored())
+    {
+      if(std::find(faces.begin(), faces.end(), c.face) == faces.end())
+        refuse(c, ops.n(), "the anchor face is not around the vertex");
+      const std::complex<double> w = face_power(ops, c, false);
+      if(w == std::complex<double>(0, 0)) refuse(c, ops.n(), "the anchor vector is zero");
+      Constraint_row re, im;
+      re.entries = {{2 * c.face, 1.}};
+      re.value = w.real();
+      im.entries = {{2 * c.face + 1, 1.}};
+      im.value = w.imag();
+      rows.push_back(std::move(re));
+      rows.push_back(std::move(im));
+    }
+    break;
+  }
+  }
+  return rows;
+}
+
+} // namespace Tangent_vector_fields
+} // namespace CGAL

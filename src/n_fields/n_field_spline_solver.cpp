@@ -1,0 +1,219 @@
+// Copyright (c) 2026 The Tangent_vector_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#include <CGAL/Tangent_vector_fields/N_field_spline_solver.h>
+#include <CGAL/Tangent_vector_fields/Sparse_spd_solver.h>
+#include <CGAL/Tangent_vector_fields/internal/Spline_solver_impl.h>
+
+#include <cmath>
+#include <optional>
+
+namespace CGAL {
+namespace Tangent_vector_fields {
+
+template class Basic_spline_solver<N_field_constraint, N_field_operators>;
+
+namespace {
+
+int checked_size(const N_field_basis& basis, int d)
+{
+  if(d == 0) d = basis.size();
+  if(d < 0 || d > basis.size())
+    throw Invalid_input("n-field spline: basis size " + std::to_string(d) + " asked of a basis of " +
+                        std::to_string(basis.size()));
+  if(d % 2)
+    throw Invalid_input("n-field spline: the basis size must be even (elements come in pairs z, i z), got " +
+                        std::to_string(d));
+  return d;
+}
+
+int checked_order(int m)
+{
+  if(m < 1) throw Invalid_input("n-field spline: the energy order m must be at least 1, got " + std::to_string(m));
+  return m;
+}
+
+double row_dot(const Constraint_row& row, const Eigen::MatrixXd& X, Eigen::Index column)
+{
+  double s = 0;
+  for(const auto& e : row.entries) s += e.second * X(e.first, column);
+  return s;
+}
+
+} // namespace
+
+// --- reduced ---------------------------------------------------------------------------
+
+Reduced_n_field_spline_solver::Reduced_n_field_spline_solver(std::shared_ptr<const N_field_basis> basis,
+                                                             int basis_size, const Spline_options& options, int order)
+  : N_field_spline_solver(basis ? basis->shared_operators() : nullptr,
+                          basis ? std::min(basis->kernel_dimension(), checked_size(*basis, basis_size)) : 0, options),
+    basis_(std::move(basis)), d_(checked_size(*basis_, basis_size)), order_(checked_order(order))
+{
+  update_energy();
+}
+
+void Reduced_n_field_spline_solver::update_energy()
+{
+  energy_.resize(d_);
+  inverse_energy_.resize(d_);
+  for(int k = 0; k < d_; ++k)
+  {
+    const double lambda = basis_->eigenvalue(k);
+    energy_[k] = k < harmonic_dimension() ? 0. : std::pow(lambda, order_) + omega_ * lambda;
+    inverse_energy_[k] = energy_[k] > 0 ? 1 / energy_[k] : 0.;
+  }
+}
+
+void Reduced_n_field_spline_solver::pull_back(std::vector<Row>& rows) const
+{
+  const Eigen::MatrixXd& fields = basis_->fields();
+  for(Row& row : rows)
+  {
+    row.representation = Eigen::VectorXd::Zero(d_);
+    for(const auto& e : row.row.entries) row.representation += e.second * fields.row(e.first).head(d_).transpose();
+    row.y = row.representation.cwiseProduct(inverse_energy_);
+    row.harmonic = row.representation.head(harmonic_dimension());
+  }
+}
+
+double Reduced_n_field_spline_solver::apply(const Row& row, const Eigen::VectorXd& y) const
+{
+  return row.representation.dot(y);
+}
+
+double Reduced_n_field_spline_solver::energy(const Eigen::VectorXd& a) const
+{
+  const int h = harmonic_dimension();
+  return a.cwiseAbs2().dot(energy_) + harmonic_penalty_ * a.head(h).squaredNorm();
+}
+
+void Reduced_n_field_spline_solver::add_harmonic(const Eigen::VectorXd& z, Eigen::VectorXd& a) const
+{
+  a.head(z.size()) += z;
+}
+
+Eigen::VectorXd Reduced_n_field_spline_solver::field() const { return basis_->field(coefficients()); }
+
+std::string Reduced_n_field_spline_solver::dependency_hint() const
+{
+  if(number_of_rows() + 1 > d_ - harmonic_dimension())
+    return "the basis has only " + std::to_string(d_) + " elements: use a larger basis";
+  return "a larger basis may tell them apart";
+}
+
+// --- full ------------------------------------------------------------------------------
+
+struct Full_n_field_spline_solver::Factors
+{
+  Sparse_spd_solver S;                  // S_n, one face per kernel component held at 0
+  std::optional<Sparse_spd_solver> screened; // S_n + omega MX (m = 2, omega > 0)
+  std::vector<int> pinned;              // unknowns held at 0
+};
+
+Full_n_field_spline_solver::Full_n_field_spline_solver(std::shared_ptr<const N_field_operators> operators,
+                                                       const Spline_options& options, int order)
+  : N_field_spline_solver(operators, operators ? static_cast<int>(operators->kernel().cols()) : 0, options),
+    order_(checked_order(order)), factors_(std::make_unique<Factors>())
+{
+  const N_field_operators& ops = this->operators();
+  const Eigen::MatrixXd& K = ops.kernel();
+  // Hold the first face of each kernel pair's component: parallel fields never vanish.
+  for(Eigen::Index j = 0; j < K.cols(); j += 2)
+    for(Eigen::Index i = 0; i < K.rows(); i += 2)
+      if(K(i, j) != 0 || K(i + 1, j) != 0)
+      {
+        factors_->pinned.push_back(static_cast<int>(i));
+        factors_->pinned.push_back(static_cast<int>(i + 1));
+        break;
+      }
+  Eigen::SparseMatrix<double> S = ops.S();
+  if(!factors_->pinned.empty())
+  {
+    std::vector<char> held(S.rows(), 0);
+    for(int p : factors_->pinned) held[p] = 1;
+    S.prune([&](Eigen::Index i, Eigen::Index j, double) { return !held[i] && !held[j]; });
+    for(int p : factors_->pinned) S.coeffRef(p, p) = 1;
+  }
+  factors_->S.factor(S, "the n-field energy S_n");
+  energy_changed();
+}
+
+Full_n_field_spline_solver::~Full_n_field_spline_solver() = default;
+
+int Full_n_field_spline_solver::space_dimension() const { return static_cast<int>(operators().masses().size()); }
+
+void Full_n_field_spline_solver::energy_changed()
+{
+  if(order_ >= 3 && omega_ > 0)
+    throw Invalid_input("full n-field spline: a tension omega > 0 is supported with m = 1 or 2 only (m = " +
+                        std::to_string(order_) + ")");
+  factors_->screened.reset();
+  if(order_ == 2 && omega_ > 0)
+  {
+    Eigen::SparseMatrix<double> A = operators().S();
+    A.diagonal() += omega_ * operators().masses();
+    factors_->screened.emplace();
+    factors_->screened->factor(A, "the screened n-field energy S_n + omega MX");
+  }
+}
+
+void Full_n_field_spline_solver::pull_back(std::vector<Row>& rows) const
+{
+  if(rows.empty()) return;
+  const N_field_operators& ops = operators();
+  const Eigen::VectorXd& mass = ops.masses();
+  const Eigen::MatrixXd& K = ops.kernel();
+  const Eigen::Index n = mass.size(), c = static_cast<Eigen::Index>(rows.size());
+  // Right-hand sides r~ = r - MX K K^T r: orthogonal to the kernel.
+  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(n, c);
+  for(Eigen::Index j = 0; j < c; ++j)
+    for(const auto& e : rows[j].row.entries) B(e.first, j) += e.second;
+  auto remove_kernel = [&](Eigen::MatrixXd& X, bool weighted_rhs) {
+    if(K.cols() == 0) return;
+    // weighted_rhs: X -= MX K (K^T X) (a right-hand side); else X -= K (K^T MX X) (a solution).
+    if(weighted_rhs)
+      X -= mass.asDiagonal() * (K * (K.transpose() * X));
+    else
+      X -= K * (K.transpose() * (mass.asDiagonal() * X));
+  };
+  auto solve_S = [&](Eigen::MatrixXd X) {
+    for(int p : factors_->pinned) X.row(p).setZero();
+    Eigen::MatrixXd U = factors_->S.solve(X);
+    remove_kernel(U, false);
+    return U;
+  };
+  remove_kernel(B, true);
+  Eigen::MatrixXd Y = solve_S(B);
+  if(order_ == 1)
+    Y /= 1 + omega_;
+  else if(order_ == 2 && factors_->screened)
+    Y = factors_->screened->solve(Eigen::MatrixXd(mass.asDiagonal() * Y));
+  else
+    for(int k = 1; k < order_; ++k) Y = solve_S(mass.asDiagonal() * Y);
+  for(Eigen::Index j = 0; j < c; ++j)
+  {
+    rows[j].y = Y.col(j);
+    rows[j].harmonic.resize(K.cols());
+    for(Eigen::Index h = 0; h < K.cols(); ++h) rows[j].harmonic[h] = row_dot(rows[j].row, K, h);
+  }
+}
+
+double Full_n_field_spline_solver::apply(const Row& row, const Eigen::VectorXd& y) const { return row.row.dot(y); }
+
+double Full_n_field_spline_solver::energy(const Eigen::VectorXd& z) const
+{
+  const N_field_operators& ops = operators();
+  const Eigen::MatrixXd& K = ops.kernel();
+  double e = ops.m_harmonic_energy(z, order_) + omega_ * ops.dirichlet_energy(z);
+  if(K.cols() > 0) e += harmonic_penalty_ * (K.transpose() * ops.masses().cwiseProduct(z)).squaredNorm();
+  return e;
+}
+
+void Full_n_field_spline_solver::add_harmonic(const Eigen::VectorXd& z, Eigen::VectorXd& x) const
+{
+  x += operators().kernel() * z;
+}
+
+} // namespace Tangent_vector_fields
+} // namespace CGAL
