@@ -59,6 +59,7 @@ struct N_field_operators::Cache
 {
   std::optional<Vector> transport, connection, weights, curvatures;
   std::optional<Sparse_matrix> S;
+  std::optional<Eigen::SparseMatrix<std::complex<double>>> complex_S;
   std::optional<Matrix> kernel;
   std::optional<std::vector<int>> vertex_corner; // 3 f + k of one corner of each vertex, -1: none
 };
@@ -238,6 +239,30 @@ N_field_operators::Vertex_fan N_field_operators::vertex_fan(int v) const
     c = next;
   } while(c != first);
   return fan;
+}
+
+const Eigen::SparseMatrix<std::complex<double>>& N_field_operators::complex_S() const
+{
+  if(!cache_->complex_S)
+  {
+    const Sparse_matrix& S = this->S();
+    std::vector<Eigen::Triplet<std::complex<double>>> entries;
+    entries.reserve(S.nonZeros() / 4);
+    // Column 2g holds the first columns of the blocks (f, g): a at row 2f, b at row 2f + 1.
+    for(Eigen::Index g = 0; g < S.outerSize(); g += 2)
+      for(Sparse_matrix::InnerIterator it(S, g); it; ++it)
+        if(it.row() % 2 == 0)
+        {
+          Sparse_matrix::InnerIterator next = it;
+          ++next;
+          const double b = next && next.row() == it.row() + 1 ? next.value() : 0.;
+          entries.emplace_back(it.row() / 2, g / 2, std::complex<double>(it.value(), b));
+        }
+    Eigen::SparseMatrix<std::complex<double>> C(S.rows() / 2, S.cols() / 2);
+    C.setFromTriplets(entries.begin(), entries.end());
+    cache_->complex_S = std::move(C);
+  }
+  return *cache_->complex_S;
 }
 
 N_field_operators::Vector N_field_operators::laplacian(const Vector& z) const

@@ -13,23 +13,29 @@
 namespace CGAL {
 namespace Tangent_vector_fields {
 
-struct Sparse_spd_solver::Impl
+template <class Scalar>
+struct Basic_sparse_spd_solver<Scalar>::Impl
 {
 #ifdef TVF_HAS_CHOLMOD
-  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> factorization;
+  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<Scalar>, Eigen::Lower> factorization;
 #else
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> factorization;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<Scalar>, Eigen::Lower> factorization;
 #endif
   bool factored = false;
   Eigen::Index n = 0;
 };
 
-Sparse_spd_solver::Sparse_spd_solver() : impl_(new Impl) {}
-Sparse_spd_solver::~Sparse_spd_solver() = default;
-Sparse_spd_solver::Sparse_spd_solver(Sparse_spd_solver&&) noexcept = default;
-Sparse_spd_solver& Sparse_spd_solver::operator=(Sparse_spd_solver&&) noexcept = default;
+template <class Scalar>
+Basic_sparse_spd_solver<Scalar>::Basic_sparse_spd_solver() : impl_(new Impl) {}
+template <class Scalar>
+Basic_sparse_spd_solver<Scalar>::~Basic_sparse_spd_solver() = default;
+template <class Scalar>
+Basic_sparse_spd_solver<Scalar>::Basic_sparse_spd_solver(Basic_sparse_spd_solver&&) noexcept = default;
+template <class Scalar>
+Basic_sparse_spd_solver<Scalar>& Basic_sparse_spd_solver<Scalar>::operator=(Basic_sparse_spd_solver&&) noexcept = default;
 
-const char* Sparse_spd_solver::backend_name()
+template <class Scalar>
+const char* Basic_sparse_spd_solver<Scalar>::backend_name()
 {
 #ifdef TVF_HAS_CHOLMOD
   return "CHOLMOD supernodal";
@@ -38,7 +44,8 @@ const char* Sparse_spd_solver::backend_name()
 #endif
 }
 
-void Sparse_spd_solver::factor(const Eigen::SparseMatrix<double>& A, const std::string& what)
+template <class Scalar>
+void Basic_sparse_spd_solver<Scalar>::factor(const Eigen::SparseMatrix<Scalar>& A, const std::string& what)
 {
   impl_->factored = false;
   impl_->n = A.rows();
@@ -59,26 +66,33 @@ void Sparse_spd_solver::factor(const Eigen::SparseMatrix<double>& A, const std::
   bool ok = impl_->factorization.info() == Eigen::Success;
 #ifndef TVF_HAS_CHOLMOD
   // LDL^T succeeds on indefinite matrices: require a positive pivot everywhere.
-  ok = ok && (impl_->factorization.vectorD().array() > 0).all();
+  ok = ok && (impl_->factorization.vectorD().real().array() > 0).all();
 #endif
   if(!ok) throw Numerical_failure("factorisation of " + what + " failed: the matrix is not numerically positive definite");
   impl_->factored = true;
 }
 
-bool Sparse_spd_solver::is_factored() const { return impl_->factored; }
-Eigen::Index Sparse_spd_solver::size() const { return impl_->n; }
+template <class Scalar>
+bool Basic_sparse_spd_solver<Scalar>::is_factored() const { return impl_->factored; }
+template <class Scalar>
+Eigen::Index Basic_sparse_spd_solver<Scalar>::size() const { return impl_->n; }
 
-Eigen::VectorXd Sparse_spd_solver::solve(const Eigen::VectorXd& b) const
+template <class Scalar>
+typename Basic_sparse_spd_solver<Scalar>::Vector Basic_sparse_spd_solver<Scalar>::solve(const Vector& b) const
 {
-  if(impl_->n == 0) return Eigen::VectorXd(0);
+  if(impl_->n == 0) return Vector(0);
   return impl_->factorization.solve(b);
 }
 
-Eigen::MatrixXd Sparse_spd_solver::solve(const Eigen::MatrixXd& B) const
+template <class Scalar>
+typename Basic_sparse_spd_solver<Scalar>::Matrix Basic_sparse_spd_solver<Scalar>::solve(const Matrix& B) const
 {
-  if(impl_->n == 0) return Eigen::MatrixXd(0, B.cols());
+  if(impl_->n == 0) return Matrix(0, B.cols());
   return impl_->factorization.solve(B);
 }
+
+template class Basic_sparse_spd_solver<double>;
+template class Basic_sparse_spd_solver<std::complex<double>>;
 
 } // namespace Tangent_vector_fields
 } // namespace CGAL

