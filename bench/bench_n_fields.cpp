@@ -204,6 +204,7 @@ int main(int argc, char** argv)
       std::printf("%6s | %9s %9s %9s %9s | %9s %8s %8s %9s\n", "d", "setup", "edit", "add", "reconstr", "rel L2",
                   "med deg", "95% deg", "E ratio");
       TVF::Chart_series series{key + ", n = " + std::to_string(n), {}, {}};
+      std::vector<std::string> singularity_rows;
       for(int d : sizes)
       {
         if(d > basis->size()) continue;
@@ -253,11 +254,37 @@ int main(int argc, char** argv)
         std::printf("%6d | %9.2f %9.4f %9.3f %9.1f | %9.2e %8.2f %8.2f %9.3f\n", d, setup_ms, edit_ms, add_ms,
                     reconstruct_ms, error, a[a.size() / 2], a[a.size() * 95 / 100],
                     ops->m_harmonic_energy(z, 2) / exact_energy);
+        // A +1 singularity by one-ring relations at an interior vertex, with the 30 vectors:
+        // accepted in this basis?  Its rows' independence and the index it gets.
+        {
+          int vertex = 0;
+          while(vertex < mesh.number_of_vertices() && (ops->vertex_fan(vertex).faces.empty() || ops->vertex_fan(vertex).on_boundary))
+            ++vertex;
+          std::string outcome;
+          try
+          {
+            const int id = reduced.add(TVF::N_field_constraint::singularity_at_vertex(vertex, 1));
+            const std::vector<int> k = TVF::n_field_indices(*ops, reduced.field());
+            std::ostringstream o;
+            o << "accepted, smallest sin^2 " << reduced.report().smallest_independence << ", index " << k[vertex] << "/" << n;
+            outcome = o.str();
+            reduced.remove(id);
+          }
+          catch(const TVF::Infeasible_constraints& e)
+          {
+            std::ostringstream o;
+            o << "refused as dependent (sin^2 " << e.independence() << ")";
+            outcome = o.str();
+          }
+          singularity_rows.push_back("  d = " + std::to_string(d) + ": one-ring singularity +1/" + std::to_string(n) +
+                                     " at vertex " + std::to_string(vertex) + ": " + outcome);
+        }
         series.x.push_back(add_ms / 1e3);
         series.y.push_back(error);
         std::fflush(stdout);
       }
       chart.series.push_back(series);
+      for(const std::string& row : singularity_rows) std::printf("%s\n", row.c_str());
       std::printf("\n");
     }
   }

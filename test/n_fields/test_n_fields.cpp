@@ -13,6 +13,7 @@
 #include <CGAL/Tangent_vector_fields/N_field_basis.h>
 #include <CGAL/Tangent_vector_fields/N_field_operators.h>
 #include <CGAL/Tangent_vector_fields/N_field_singularities.h>
+#include <CGAL/Tangent_vector_fields/N_field_spline.h>
 #include <CGAL/Tangent_vector_fields/N_field_spline_solver.h>
 #include <CGAL/Tangent_vector_fields/errors.h>
 #include <CGAL/Tangent_vector_fields/smoothest_n_field.h>
@@ -25,6 +26,7 @@
 #include <cstdio>
 #include <fstream>
 #include <numeric>
+#include <set>
 
 namespace TVF = CGAL::Tangent_vector_fields;
 using namespace tvf_test;
@@ -590,9 +592,11 @@ std::vector<TVF::N_field_constraint> random_vector_constraints(const TVF::Intrin
   std::uniform_int_distribution<int> face(0, mesh.number_of_faces() - 1);
   std::uniform_real_distribution<double> angle(-M_PI, M_PI);
   std::vector<TVF::N_field_constraint> constraints;
+  std::set<int> used; // distinct faces: two vectors in one face contradict each other
   for(int i = 0; i < count; ++i)
   {
-    const int f = face(gen);
+    int f = face(gen);
+    while(!used.insert(f).second) f = face(gen);
     const double a = angle(gen);
     const auto v = mesh.from_frame(f, std::cos(a), std::sin(a));
     constraints.push_back(TVF::N_field_constraint::vector_in_face(f, v));
@@ -828,4 +832,74 @@ TEST(NFieldSpline, BadConstraintsAreRefusedWithTheirReason)
   {
     EXPECT_NE(std::string(e.what()).find("must be even"), std::string::npos) << e.what();
   }
+}
+
+TEST(NFieldSpline, InvariantToScaleAndRigidMotion)
+{
+  // The same constraints (vectors moved with the mesh) on the mesh scaled by 1e-8 and 1e8 and
+  // moved: the same field (frame coordinates are intrinsic), full and reduced.
+  Mesh reference = make_torus(16, 10);
+  jitter_vertices(reference, 0.05, 47);
+  const auto ops0 = n_field_operators(reference, 2);
+  const auto constraints = random_vector_constraints(ops0->mesh(), 5, 53);
+  TVF::Full_n_field_spline_solver full0(ops0);
+  full0.add(constraints);
+  const auto basis0 = std::make_shared<const TVF::N_field_basis>(ops0, 60);
+  TVF::Reduced_n_field_spline_solver reduced0(basis0, 60);
+  reduced0.add(constraints);
+  const auto R = rotation_matrix(Vector_3(1, -2, 0.5), 1.1);
+  for(double s : {1e-8, 1e8})
+  {
+    Mesh mesh = reference;
+    transform(mesh, s, R, Vector_3(-2 * s, 7 * s, 3 * s));
+    const auto ops = n_field_operators(mesh, 2);
+    std::vector<TVF::N_field_constraint> moved = constraints;
+    for(auto& c : moved)
+    {
+      const auto& v = c.vector;
+      c.vector = {s * (R[0] * v[0] + R[1] * v[1] + R[2] * v[2]), s * (R[3] * v[0] + R[4] * v[1] + R[5] * v[2]),
+                  s * (R[6] * v[0] + R[7] * v[1] + R[8] * v[2])};
+    }
+    TVF::Full_n_field_spline_solver full(ops);
+    full.add(moved);
+    EXPECT_LT((full.field() / s - full0.field()).norm(), 1e-8 * full0.field().norm()) << "scale " << s;
+    const auto basis = std::make_shared<const TVF::N_field_basis>(ops, 60);
+    TVF::Reduced_n_field_spline_solver reduced(basis, 60);
+    reduced.add(moved);
+    EXPECT_LT((reduced.field() / s - reduced0.field()).norm(), 1e-6 * reduced0.field().norm()) << "scale " << s;
+  }
+}
+
+TEST(NFieldSpline, GenericInterfaceFullAndReduced)
+{
+  Mesh sphere = make_icosphere(3);
+  auto out = sphere.add_property_map<Face_index, Vector_3>("f:lines", Vector_3(0, 0, 0)).first;
+  auto index = sphere.add_property_map<Vertex_index, int>("v:k", 0).first;
+  const Face_index f(7), g(300);
+  auto edge_of = [&](Face_index h) {
+    const auto e = sphere.halfedge(h);
+    return sphere.point(sphere.target(e)) - sphere.point(sphere.source(e));
+  };
+  TVF::N_field_spline<Mesh> exact(sphere, 2);
+  exact.add_vector(f, edge_of(f));
+  const TVF::Constraint_id id = exact.add_vector(g, edge_of(g));
+  exact.field(out);
+  // A line field: the constrained face carries the vector or its opposite.
+  const Vector_3 e = edge_of(f), u = out[f];
+  EXPECT_LT(std::min((u - e).squared_length(), (u + e).squared_length()), 1e-18 * e.squared_length());
+  int sum = 0;
+  for(const auto& s : exact.singularities(index)) sum += s.second;
+  EXPECT_EQ(sum, 4); // n chi
+  exact.set_vector(id, -edge_of(g)); // the same line: the same field
+  auto again = sphere.add_property_map<Face_index, Vector_3>("f:again", Vector_3(0, 0, 0)).first;
+  exact.field(again);
+  for(Face_index h : sphere.faces()) EXPECT_LT((again[h] - out[h]).squared_length(), 1e-20);
+
+  TVF::N_field_spline<Mesh> reduced(sphere, 2, TVF::parameters::number_of_eigenfields(81));
+  ASSERT_TRUE(reduced.basis());
+  EXPECT_EQ(reduced.basis()->size(), 82);
+  reduced.add_vector(f, edge_of(f));
+  auto unit = sphere.add_property_map<Face_index, Vector_3>("f:unit", Vector_3(0, 0, 0)).first;
+  reduced.field(unit, true);
+  EXPECT_NEAR(unit[f].squared_length(), 1., 1e-12);
 }
