@@ -17,67 +17,66 @@
 namespace CGAL {
 namespace Tangent_vector_fields {
 
+namespace internal {
+
+double Json_reader::number(const char* key) const
+{
+  if(!has(key)) fail(std::string("missing \"") + key + "\"");
+  double x = 0;
+  if(!read_json_number(node.get_child(key), x)) fail(std::string("\"") + key + "\" is not a number");
+  if(!std::isfinite(x)) fail(std::string("\"") + key + "\" is not finite");
+  return x;
+}
+
+int Json_reader::index(const char* key) const
+{
+  const double x = number(key);
+  if(x != std::floor(x) || x < 0 || x > 2e9) fail(std::string("\"") + key + "\" is not a valid index");
+  return static_cast<int>(x);
+}
+
+std::array<double, 3> Json_reader::triple(const char* key) const
+{
+  if(!has(key)) fail(std::string("missing \"") + key + "\"");
+  std::array<double, 3> v{{0, 0, 0}};
+  int k = 0;
+  for(const auto& child : node.get_child(key))
+  {
+    if(!child.first.empty() || k == 3 || !read_json_number(child.second, v[k++]))
+      fail(std::string("\"") + key + "\" must be an array of 3 numbers");
+  }
+  if(k != 3) fail(std::string("\"") + key + "\" must be an array of 3 numbers");
+  for(double x : v)
+    if(!std::isfinite(x)) fail(std::string("\"") + key + "\" has a non-finite entry");
+  return v;
+}
+
+std::array<double, 3> Json_reader::point(const Intrinsic_mesh& mesh, int face) const
+{
+  if(face >= mesh.number_of_faces()) fail("face " + std::to_string(face) + " out of range");
+  if(has("point")) return barycentric_coordinates(mesh, face, triple("point"));
+  if(has("barycentric"))
+  {
+    const std::array<double, 3> w = triple("barycentric");
+    const std::array<double, 3> v = triple("vertices");
+    try
+    {
+      return barycentric_in_face_order(mesh, face, {{int(v[0]), int(v[1]), int(v[2])}}, w);
+    }
+    catch(const Invalid_input& e)
+    {
+      fail(e.what());
+    }
+  }
+  fail("a point in a face needs \"point\" or \"vertices\" and \"barycentric\"");
+}
+
+} // namespace internal
+
 namespace {
 
 typedef boost::property_tree::ptree Tree;
-
-struct Reader
-{
-  const Tree& node;
-  std::string name;
-
-  [[noreturn]] void fail(const std::string& what) const { throw Invalid_input(name + ": " + what); }
-  bool has(const char* key) const { return node.count(key) > 0; }
-  double number(const char* key) const
-  {
-    if(!has(key)) fail(std::string("missing \"") + key + "\"");
-    double x = 0;
-    if(!internal::read_json_number(node.get_child(key), x)) fail(std::string("\"") + key + "\" is not a number");
-    if(!std::isfinite(x)) fail(std::string("\"") + key + "\" is not finite");
-    return x;
-  }
-  int index(const char* key) const
-  {
-    const double x = number(key);
-    if(x != std::floor(x) || x < 0 || x > 2e9) fail(std::string("\"") + key + "\" is not a valid index");
-    return static_cast<int>(x);
-  }
-  std::array<double, 3> triple(const char* key) const
-  {
-    if(!has(key)) fail(std::string("missing \"") + key + "\"");
-    std::array<double, 3> v{{0, 0, 0}};
-    int k = 0;
-    for(const auto& child : node.get_child(key))
-    {
-      if(!child.first.empty() || k == 3 || !internal::read_json_number(child.second, v[k++]))
-        fail(std::string("\"") + key + "\" must be an array of 3 numbers");
-    }
-    if(k != 3) fail(std::string("\"") + key + "\" must be an array of 3 numbers");
-    for(double x : v)
-      if(!std::isfinite(x)) fail(std::string("\"") + key + "\" has a non-finite entry");
-    return v;
-  }
-  // Point in a face: "point" (3D) or "vertices" + "barycentric".
-  std::array<double, 3> point(const Intrinsic_mesh& mesh, int face) const
-  {
-    if(face >= mesh.number_of_faces()) fail("face " + std::to_string(face) + " out of range");
-    if(has("point")) return barycentric_coordinates(mesh, face, triple("point"));
-    if(has("barycentric"))
-    {
-      const std::array<double, 3> w = triple("barycentric");
-      const std::array<double, 3> v = triple("vertices");
-      try
-      {
-        return barycentric_in_face_order(mesh, face, {{int(v[0]), int(v[1]), int(v[2])}}, w);
-      }
-      catch(const Invalid_input& e)
-      {
-        fail(e.what());
-      }
-    }
-    fail("a point in a face needs \"point\" or \"vertices\" and \"barycentric\"");
-  }
-};
+typedef internal::Json_reader Reader;
 
 Field_constraint parse(const Tree& node, const std::string& name, const Intrinsic_mesh& mesh)
 {

@@ -433,7 +433,7 @@ const Sparse_matrix& Operator_matrices::B() const
   return *cache_->B;
 }
 
-Vector Operator_matrices::rotate(const Vector& v) const
+Vector Operator_matrices::rotate(const Vector& v)
 {
   Vector r(v.size());
   for(Eigen::Index f = 0; 2 * f < v.size(); ++f)

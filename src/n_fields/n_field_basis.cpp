@@ -19,17 +19,6 @@ namespace Tangent_vector_fields {
 
 namespace internal {
 
-Eigen::VectorXd rotate_quarter(const Eigen::VectorXd& z)
-{
-  Eigen::VectorXd r(z.size());
-  for(Eigen::Index f = 0; f < z.size() / 2; ++f)
-  {
-    r[2 * f] = -z[2 * f + 1];
-    r[2 * f + 1] = z[2 * f];
-  }
-  return r;
-}
-
 int pair_up(const Eigen::VectorXd& values, const Eigen::MatrixXd& vectors, const Eigen::VectorXd& mass,
             int count, Eigen::VectorXd& paired_values, Eigen::MatrixXd& paired)
 {
@@ -53,7 +42,7 @@ int pair_up(const Eigen::VectorXd& values, const Eigen::MatrixXd& vectors, const
     if(!(norm > 1e-3)) continue;
     v /= norm;
     paired.col(filled) = v;
-    paired.col(filled + 1) = rotate_quarter(v);
+    paired.col(filled + 1) = Operator_matrices::rotate(v);
     paired_values[filled] = paired_values[filled + 1] = values[i];
     filled += 2;
   }

@@ -76,6 +76,28 @@ public:
       solver_ = std::make_unique<Full_n_field_spline_solver>(operators_, spline_options, order);
   }
 
+  /// Reduced on a basis computed before (e.g. `N_field_basis::load`ed for this mesh, with
+  /// the same index maps): real-time edits without the eigenproblem.  `d`: elements used (0: all).
+  template <class NamedParameters = parameters::Default_named_parameters>
+  N_field_spline(const TriangleMesh& mesh, std::shared_ptr<const N_field_basis> basis, int d = 0,
+                 const NamedParameters& np = parameters::default_values(), int order = 2)
+    : adapter_(std::make_shared<internal::Mesh_adapter<TriangleMesh>>(mesh, np)), basis_(std::move(basis))
+  {
+    using parameters::choose_parameter;
+    using parameters::get_parameter;
+    if(!basis_) throw Invalid_input("n-field spline: no basis given");
+    auto vim = CGAL::get_initialized_vertex_index_map(mesh, np);
+    auto fim = CGAL::get_initialized_face_index_map(mesh, np);
+    vertex_index_ = [vim](vertex_descriptor v) { return static_cast<int>(get(vim, v)); };
+    face_index_ = [fim](face_descriptor f) { return static_cast<int>(get(fim, f)); };
+    if(basis_->operators().mesh().number_of_faces() != adapter_->intrinsic_mesh()->number_of_faces())
+      throw Invalid_input("n-field spline: the basis belongs to a mesh with another number of faces");
+    operators_ = basis_->shared_operators();
+    Spline_options spline_options;
+    spline_options.omega = choose_parameter(get_parameter(np, internal_np::spline_tension), 0.);
+    solver_ = std::make_unique<Reduced_n_field_spline_solver>(basis_, d, spline_options, order);
+  }
+
   /// The n-field's vectors in face `f` are `v` (projected) and its turns by `2 pi j / n`.
   template <class Vector_3>
   Constraint_id add_vector(face_descriptor f, const Vector_3& v)

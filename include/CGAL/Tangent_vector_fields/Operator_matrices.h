@@ -77,8 +77,8 @@ public:
   /// Biharmonic energy `B = S MX^-1 S`.
   const Sparse_matrix& B() const;
 
-  /// `J v` without forming `J`.
-  Vector rotate(const Vector& field) const;
+  /// `J v` without forming `J` (needs no mesh: each face's `(a, b)` becomes `(-b, a)`).
+  static Vector rotate(const Vector& field);
   /// Conforming divergence and curl (vertex values): `-M^-1 G^T MX v`, `M^-1 G^T J MX v`.
   Vector divergence(const Vector& field) const;
   Vector curl(const Vector& field) const;

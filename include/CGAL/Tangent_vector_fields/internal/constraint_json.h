@@ -9,14 +9,31 @@
 // its messages).
 
 #include <CGAL/Tangent_vector_fields/constraint_file_io.h>
+#include <CGAL/Tangent_vector_fields/errors.h>
 
 #include <boost/property_tree/ptree.hpp>
 
+#include <array>
 #include <string>
 
 namespace CGAL {
 namespace Tangent_vector_fields {
 namespace internal {
+
+/// Reads the members of one JSON object; every failure throws `Invalid_input` starting with `name`.
+struct Json_reader
+{
+  const boost::property_tree::ptree& node;
+  std::string name;
+
+  [[noreturn]] void fail(const std::string& what) const { throw Invalid_input(name + ": " + what); }
+  bool has(const char* key) const { return node.count(key) > 0; }
+  double number(const char* key) const;
+  int index(const char* key) const;
+  std::array<double, 3> triple(const char* key) const;
+  /// A point in `face`: "point" (3D) or "vertices" + "barycentric"; barycentric coordinates in face order.
+  std::array<double, 3> point(const Intrinsic_mesh& mesh, int face) const;
+};
 
 /// A JSON number (the tree keeps its text).  Strict: the whole text must be a number; an
 /// overflowing one such as `1e999` reads as infinite, so that callers can say "not finite".

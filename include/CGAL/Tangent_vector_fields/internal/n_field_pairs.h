@@ -13,9 +13,6 @@ namespace CGAL {
 namespace Tangent_vector_fields {
 namespace internal {
 
-/// `J z`: each face's `(a, b)` to `(-b, a)`.
-Eigen::VectorXd rotate_quarter(const Eigen::VectorXd& z);
-
 /// From mass-orthonormal eigenvectors in ascending order of `values`, up to `count` columns
 /// `(phi_1, J phi_1, phi_2, J phi_2, ...)`, mass-orthonormal, spanning the same `J`-invariant
 /// eigenspaces.  Returns the number of columns filled (even).

@@ -1,0 +1,166 @@
+// Copyright (c) 2026 The Tangent_vector_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#include <CGAL/Tangent_vector_fields/n_field_constraint_file_io.h>
+#include <CGAL/Tangent_vector_fields/errors.h>
+#include <CGAL/Tangent_vector_fields/internal/constraint_json.h>
+
+#include <boost/property_tree/json_parser.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace CGAL {
+namespace Tangent_vector_fields {
+
+namespace {
+
+typedef boost::property_tree::ptree Tree;
+
+// A signed integer member (indices k may be negative).
+int signed_integer(const internal::Json_reader& r, const char* key)
+{
+  const double x = r.number(key);
+  if(x != std::floor(x) || std::abs(x) > 1e6) r.fail(std::string("\"") + key + "\" is not an integer");
+  return static_cast<int>(x);
+}
+
+void check_object(const internal::Json_reader& r)
+{
+  if(!r.node.data().empty() || r.node.empty()) r.fail("not a JSON object");
+}
+
+N_field_constraint parse(const internal::Json_reader& r)
+{
+  check_object(r);
+  const std::string type = r.node.get<std::string>("type", "");
+  if(type == "vector") return N_field_constraint::vector_in_face(r.index("face"), r.triple("vector"));
+  if(type == "direction") return N_field_constraint::direction_in_face(r.index("face"), r.triple("direction"));
+  if(type == "singularity")
+  {
+    const int vertex = r.index("vertex"), k = signed_integer(r, "index");
+    if(r.has("face") || r.has("vector"))
+      return N_field_constraint::singularity_at_vertex(vertex, k, r.index("face"), r.triple("vector"));
+    return N_field_constraint::singularity_at_vertex(vertex, k);
+  }
+  r.fail("unknown type \"" + type + "\" (vector, direction, singularity)");
+}
+
+} // namespace
+
+N_field_constraint_file read_n_field_constraint_file(std::istream& in, std::shared_ptr<const Operator_matrices> operators)
+{
+  Tree root;
+  try
+  {
+    boost::property_tree::read_json(in, root);
+  }
+  catch(const boost::property_tree::json_parser_error& e)
+  {
+    throw Invalid_input("n-field constraint file: " + e.message() + " at line " + std::to_string(e.line()));
+  }
+  const internal::Json_reader file_reader{root, "n-field constraint file"};
+  check_object(file_reader);
+  N_field_constraint_file file;
+  file.n = signed_integer(file_reader, "n");
+  if(file.n < 1) file_reader.fail("\"n\" must be at least 1");
+  if(file_reader.has("omega"))
+  {
+    file.omega = file_reader.number("omega");
+    if(file.omega < 0) file_reader.fail("\"omega\" must be >= 0");
+  }
+  if(file_reader.has("order"))
+  {
+    file.order = signed_integer(file_reader, "order");
+    if(file.order < 1) file_reader.fail("\"order\" must be at least 1");
+  }
+  if(root.count("singularities"))
+  {
+    int position = 0;
+    for(const auto& child : root.get_child("singularities"))
+    {
+      const internal::Json_reader r{child.second, "singularity " + std::to_string(position++)};
+      if(!child.first.empty()) file_reader.fail("\"singularities\" must be an array");
+      check_object(r);
+      file.singularities.push_back({r.index("vertex"), signed_integer(r, "index")});
+    }
+  }
+  // The operators check the prescribed singularities (interior vertices, no repeats).
+  N_field_options options;
+  options.singularities = file.singularities;
+  std::unique_ptr<N_field_operators> n_operators;
+  try
+  {
+    n_operators = std::make_unique<N_field_operators>(operators, file.n, options);
+  }
+  catch(const Invalid_input& e)
+  {
+    file_reader.fail(e.what());
+  }
+  if(!root.count("constraints")) file_reader.fail("no \"constraints\" array");
+  int position = 0;
+  for(const auto& child : root.get_child("constraints"))
+  {
+    const internal::Json_reader r{child.second, "constraint " + std::to_string(position++)};
+    if(!child.first.empty()) file_reader.fail("\"constraints\" must be an array");
+    const N_field_constraint c = parse(r);
+    try
+    {
+      constraint_rows(*n_operators, c);
+    }
+    catch(const Invalid_input& e)
+    {
+      r.fail(e.what());
+    }
+    file.constraints.push_back(c);
+  }
+  return file;
+}
+
+N_field_constraint_file read_n_field_constraint_file(const std::string& path,
+                                                     std::shared_ptr<const Operator_matrices> operators)
+{
+  std::ifstream in(path);
+  if(!in) throw Invalid_input("cannot open n-field constraint file " + path);
+  return read_n_field_constraint_file(in, std::move(operators));
+}
+
+void write_n_field_constraint_file(std::ostream& out, const N_field_constraint_file& file)
+{
+  auto triple = [](const std::array<double, 3>& v) {
+    std::ostringstream s;
+    s << std::setprecision(17) << "[" << v[0] << ", " << v[1] << ", " << v[2] << "]";
+    return s.str();
+  };
+  out << std::setprecision(17) << "{\n  \"n\": " << file.n << ",\n  \"omega\": " << file.omega
+      << ",\n  \"order\": " << file.order << ",\n  \"singularities\": [";
+  for(std::size_t i = 0; i < file.singularities.size(); ++i)
+    out << (i ? ", " : "") << "{\"vertex\": " << file.singularities[i].first << ", \"index\": " << file.singularities[i].second
+        << "}";
+  out << "],\n  \"constraints\": [";
+  for(std::size_t i = 0; i < file.constraints.size(); ++i)
+  {
+    const N_field_constraint& c = file.constraints[i];
+    out << (i ? ",\n    " : "\n    ") << "{";
+    switch(c.kind)
+    {
+    case N_field_constraint_kind::vector:
+      out << "\"type\": \"vector\", \"face\": " << c.face << ", \"vector\": " << triple(c.vector);
+      break;
+    case N_field_constraint_kind::direction:
+      out << "\"type\": \"direction\", \"face\": " << c.face << ", \"direction\": " << triple(c.vector);
+      break;
+    case N_field_constraint_kind::singularity:
+      out << "\"type\": \"singularity\", \"vertex\": " << c.vertex << ", \"index\": " << c.index;
+      if(c.is_anchored()) out << ", \"face\": " << c.face << ", \"vector\": " << triple(c.vector);
+      break;
+    }
+    out << "}";
+  }
+  out << "\n  ]\n}\n";
+}
+
+} // namespace Tangent_vector_fields
+} // namespace CGAL
