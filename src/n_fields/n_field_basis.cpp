@@ -153,10 +153,7 @@ void N_field_basis::save(const std::string& path) const
   using internal::write_value;
   std::ofstream out(path, std::ios::binary);
   if(!out) throw Invalid_input("cannot write the n-field basis to '" + path + "'");
-  out.write(file_magic, sizeof(file_magic));
-  write_value(out, file_version);
-  write_value(out, internal::byte_order_mark);
-  internal::write_mesh_identity(out, operators_->mesh());
+  internal::write_basis_header(out, file_magic, file_version, operators_->mesh());
   write_value<std::int32_t>(out, n());
   write_value<std::int32_t>(out, static_cast<std::int32_t>(operators_->options().boundary));
   write_value<std::int32_t>(out, kernel_dimension_);
@@ -171,19 +168,11 @@ void N_field_basis::save(const std::string& path) const
 N_field_basis N_field_basis::load(std::shared_ptr<const N_field_operators> operators, const std::string& path)
 {
   N_field_basis basis(std::move(operators));
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if(!in) throw Invalid_input("cannot open the n-field basis file '" + path + "'");
-  const std::uint64_t bytes = static_cast<std::uint64_t>(in.tellg());
-  in.seekg(0);
+  std::uint64_t bytes = 0;
+  std::ifstream in = internal::open_basis_file(path, "n-field basis", bytes);
   internal::Binary_reader r(in, path, bytes, "n-field basis");
-  r.expect_magic(file_magic, "not an n-field basis file");
-  const std::uint32_t version = r.value<std::uint32_t>();
-  if(version != file_version)
-    r.fail("file format version " + std::to_string(version) + ", this library reads version " +
-           std::to_string(file_version));
-  if(r.value<std::uint32_t>() != internal::byte_order_mark) r.fail("written on a machine of another byte order");
   const N_field_operators& ops = basis.operators();
-  r.expect_mesh_identity(ops.mesh());
+  r.expect_basis_header(file_magic, file_version, ops.mesh());
   const std::int32_t n = r.value<std::int32_t>();
   if(n != ops.n()) r.fail("it holds " + std::to_string(n) + "-fields, not " + std::to_string(ops.n()) + "-fields");
   if(r.value<std::int32_t>() != static_cast<std::int32_t>(ops.options().boundary))

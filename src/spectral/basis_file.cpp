@@ -77,6 +77,33 @@ void write_mesh_identity(std::ostream& out, const Intrinsic_mesh& mesh)
   for(double s : geometry_signature(mesh)) write_value(out, s);
 }
 
+void write_basis_header(std::ostream& out, const char (&magic)[8], std::uint32_t version, const Intrinsic_mesh& mesh)
+{
+  out.write(magic, sizeof(magic));
+  write_value(out, version);
+  write_value(out, byte_order_mark);
+  write_mesh_identity(out, mesh);
+}
+
+std::ifstream open_basis_file(const std::string& path, const std::string& what, std::uint64_t& bytes)
+{
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if(!in) throw Invalid_input("cannot open the " + what + " file '" + path + "'");
+  bytes = static_cast<std::uint64_t>(in.tellg());
+  in.seekg(0);
+  return in;
+}
+
+void Binary_reader::expect_basis_header(const char (&magic)[8], std::uint32_t version, const Intrinsic_mesh& mesh)
+{
+  expect_magic(magic, "not a " + what_ + " file");
+  const std::uint32_t found = value<std::uint32_t>();
+  if(found != version)
+    fail("file format version " + std::to_string(found) + ", this library reads version " + std::to_string(version));
+  if(value<std::uint32_t>() != byte_order_mark) fail("written on a machine of another byte order");
+  expect_mesh_identity(mesh);
+}
+
 Eigen::MatrixXd Binary_reader::matrix(Eigen::Index rows, Eigen::Index cols, const char* what)
 {
   const std::int64_t r = value<std::int64_t>(), c = value<std::int64_t>();

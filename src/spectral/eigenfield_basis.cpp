@@ -521,10 +521,7 @@ void Eigenfield_basis::save(const std::string& path) const
   std::ofstream out(path, std::ios::binary);
   if(!out) throw Invalid_input("cannot write the spectral basis to '" + path + "'");
   const Intrinsic_mesh& mesh = operators().mesh();
-  out.write(file_magic, sizeof(file_magic));
-  write_value(out, file_version);
-  write_value(out, internal::byte_order_mark);
-  internal::write_mesh_identity(out, mesh);
+  internal::write_basis_header(out, file_magic, file_version, mesh);
   write_matrix(out, exact_values_);
   write_matrix(out, exact_functions_);
   write_matrix(out, coexact_values_);
@@ -549,19 +546,11 @@ void Eigenfield_basis::save(const std::string& path) const
 Eigenfield_basis Eigenfield_basis::load(std::shared_ptr<const Hodge_solver> solver, const std::string& path)
 {
   Eigenfield_basis basis(std::move(solver));
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if(!in) throw Invalid_input("cannot open the spectral basis file '" + path + "'");
-  const std::uint64_t bytes = static_cast<std::uint64_t>(in.tellg());
-  in.seekg(0);
+  std::uint64_t bytes = 0;
+  std::ifstream in = internal::open_basis_file(path, "spectral basis", bytes);
   internal::Binary_reader r(in, path, bytes, "spectral basis");
-  r.expect_magic(file_magic, "not a spectral basis file");
-  const std::uint32_t version = r.value<std::uint32_t>();
-  if(version != file_version)
-    r.fail("file format version " + std::to_string(version) + ", this library reads version " +
-           std::to_string(file_version));
-  if(r.value<std::uint32_t>() != internal::byte_order_mark) r.fail("written on a machine of another byte order");
   const Intrinsic_mesh& mesh = basis.operators().mesh();
-  r.expect_mesh_identity(mesh);
+  r.expect_basis_header(file_magic, file_version, mesh);
   const Eigen::Index nv = mesh.number_of_vertices(), ne = mesh.number_of_interior_edges(), nf = mesh.number_of_faces();
   basis.exact_values_ = r.matrix(-1, 1, "exact eigenvalues");
   basis.exact_functions_ = r.matrix(nv, basis.exact_values_.size(), "exact eigenfunctions");

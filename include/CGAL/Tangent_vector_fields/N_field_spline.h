@@ -162,7 +162,7 @@ private:
   template <class T>
   static std::array<double, 3> triple(const T& v)
   {
-    return {{CGAL::to_double(v.x()), CGAL::to_double(v.y()), CGAL::to_double(v.z())}};
+    return internal::to_array(v);
   }
 
   std::shared_ptr<internal::Mesh_adapter<TriangleMesh>> adapter_;

@@ -167,7 +167,7 @@ private:
   template <class T>
   static std::array<double, 3> triple(const T& v)
   {
-    return {{CGAL::to_double(v.x()), CGAL::to_double(v.y()), CGAL::to_double(v.z())}};
+    return internal::to_array(v);
   }
 
   const Intrinsic_mesh& intrinsic() const { return operators_.intrinsic_mesh(); }

@@ -19,6 +19,7 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -40,6 +41,13 @@ Intrinsic_mesh_options intrinsic_mesh_options(const NamedParameters& np)
   options.degeneracy_tolerance =
       choose_parameter(get_parameter(np, internal_np::degeneracy_tolerance), options.degeneracy_tolerance);
   return options;
+}
+
+/// The coordinates of a CGAL point or vector as doubles.
+template <class T>
+std::array<double, 3> to_array(const T& v)
+{
+  return {{CGAL::to_double(v.x()), CGAL::to_double(v.y()), CGAL::to_double(v.z())}};
 }
 
 /// The mesh's elements in the order of their indices, and the intrinsic mesh built from them.

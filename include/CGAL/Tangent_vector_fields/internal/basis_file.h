@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cstdint>
+#include <fstream>
 #include <istream>
 #include <ostream>
 #include <string>
@@ -44,6 +45,13 @@ void write_matrix(std::ostream& out, const Eigen::MatrixXd& M);
 /// Writes the fingerprint and the geometry signature of `mesh`.
 void write_mesh_identity(std::ostream& out, const Intrinsic_mesh& mesh);
 
+/// The header every basis file starts with: magic, version, byte-order mark, mesh identity.
+void write_basis_header(std::ostream& out, const char (&magic)[8], std::uint32_t version, const Intrinsic_mesh& mesh);
+
+/// Opens `path` for `Binary_reader`; `bytes` receives its size.
+/// \throws Invalid_input "cannot open the <what> file '<path>'"
+std::ifstream open_basis_file(const std::string& path, const std::string& what, std::uint64_t& bytes);
+
 /// Reads at most `bytes` from `in`; every failure throws `Invalid_input` with
 /// "cannot load the <what> from '<path>': <reason>".
 class Binary_reader
@@ -65,6 +73,8 @@ public:
   void expect_magic(const char (&magic)[8], const std::string& why_not);
   /// Checks the fingerprint and the geometry signature written by `write_mesh_identity`.
   void expect_mesh_identity(const Intrinsic_mesh& mesh);
+  /// Checks a header written by `write_basis_header` ("not a <what> file", version, byte order, mesh).
+  void expect_basis_header(const char (&magic)[8], std::uint32_t version, const Intrinsic_mesh& mesh);
   [[noreturn]] void fail(const std::string& why) const;
 
 private:
