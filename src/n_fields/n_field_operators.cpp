@@ -179,14 +179,7 @@ const N_field_operators::Sparse_matrix& N_field_operators::S() const
           entries.emplace_back(2 * g + b, 2 * f + a, -w[i] * R[a][b]);
         }
     }
-    if(options_.boundary == N_field_boundary::zero)
-      for(int e = 0; e < mesh.number_of_edges(); ++e)
-        if(mesh.is_boundary_edge(e))
-        {
-          const int f = mesh.edge_faces(e)[0];
-          const double l = mesh.edge_length(e);
-          diagonal[f] += 3 * l * l / mesh.face_area(f);
-        }
+    add_boundary_diagonal(diagonal);
     for(int f = 0; f < mesh.number_of_faces(); ++f)
       for(int a = 0; a < 2; ++a) entries.emplace_back(2 * f + a, 2 * f + a, diagonal[f]);
     Sparse_matrix S(2 * mesh.number_of_faces(), 2 * mesh.number_of_faces());
@@ -245,24 +238,42 @@ const Eigen::SparseMatrix<std::complex<double>>& N_field_operators::complex_S() 
 {
   if(!cache_->complex_S)
   {
-    const Sparse_matrix& S = this->S();
+    // Assembled directly (not from the real form): the smoothest field needs only this one.
+    const Intrinsic_mesh& mesh = this->mesh();
+    const Vector& t = connection_angles();
+    const Vector& w = edge_weights();
     std::vector<Eigen::Triplet<std::complex<double>>> entries;
-    entries.reserve(S.nonZeros() / 4);
-    // Column 2g holds the first columns of the blocks (f, g): a at row 2f, b at row 2f + 1.
-    for(Eigen::Index g = 0; g < S.outerSize(); g += 2)
-      for(Sparse_matrix::InnerIterator it(S, g); it; ++it)
-        if(it.row() % 2 == 0)
-        {
-          Sparse_matrix::InnerIterator next = it;
-          ++next;
-          const double b = next && next.row() == it.row() + 1 ? next.value() : 0.;
-          entries.emplace_back(it.row() / 2, g / 2, std::complex<double>(it.value(), b));
-        }
-    Eigen::SparseMatrix<std::complex<double>> C(S.rows() / 2, S.cols() / 2);
+    entries.reserve(2 * static_cast<std::size_t>(t.size()) + mesh.number_of_faces());
+    Vector diagonal = Vector::Zero(mesh.number_of_faces());
+    for(int i = 0; i < t.size(); ++i)
+    {
+      const auto& ff = mesh.edge_faces(mesh.interior_edges()[i]);
+      diagonal[ff[0]] += w[i];
+      diagonal[ff[1]] += w[i];
+      const std::complex<double> rho = std::polar(w[i], n_ * t[i]); // w_e rho_fg^n
+      entries.emplace_back(ff[0], ff[1], -rho);
+      entries.emplace_back(ff[1], ff[0], -std::conj(rho));
+    }
+    add_boundary_diagonal(diagonal);
+    for(int f = 0; f < mesh.number_of_faces(); ++f) entries.emplace_back(f, f, diagonal[f]);
+    Eigen::SparseMatrix<std::complex<double>> C(mesh.number_of_faces(), mesh.number_of_faces());
     C.setFromTriplets(entries.begin(), entries.end());
     cache_->complex_S = std::move(C);
   }
   return *cache_->complex_S;
+}
+
+void N_field_operators::add_boundary_diagonal(Vector& diagonal) const
+{
+  if(options_.boundary != N_field_boundary::zero) return;
+  const Intrinsic_mesh& mesh = this->mesh();
+  for(int e = 0; e < mesh.number_of_edges(); ++e)
+    if(mesh.is_boundary_edge(e))
+    {
+      const int f = mesh.edge_faces(e)[0];
+      const double l = mesh.edge_length(e);
+      diagonal[f] += 3 * l * l / mesh.face_area(f);
+    }
 }
 
 N_field_operators::Vector N_field_operators::laplacian(const Vector& z) const

@@ -211,6 +211,18 @@ TEST(NFieldOperators, SymmetricPositiveSemidefiniteAndCommutesWithRotation)
     const Eigen::VectorXd d = nops->masses().cwiseSqrt().cwiseInverse();
     const Eigen::VectorXd lambda = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(d.asDiagonal() * S * d.asDiagonal()).eigenvalues();
     EXPECT_GT(lambda[0], -1e-12 * lambda[lambda.size() - 1]) << "n = " << n;
+    // The complex form (assembled on its own) acts as the real one, free and zero boundary.
+    for(auto boundary : {TVF::N_field_boundary::free, TVF::N_field_boundary::zero})
+    {
+      const auto o = n_field_operators(mesh, n, boundary);
+      const Eigen::VectorXd x = random_field(o->mesh().number_of_faces(), 71);
+      Eigen::VectorXcd c(x.size() / 2);
+      for(Eigen::Index f = 0; f < c.size(); ++f) c[f] = std::complex<double>(x[2 * f], x[2 * f + 1]);
+      const Eigen::VectorXd real = o->S() * x;
+      const Eigen::VectorXcd complex = o->complex_S() * c;
+      for(Eigen::Index f = 0; f < c.size(); ++f)
+        EXPECT_LT(std::abs(complex[f] - std::complex<double>(real[2 * f], real[2 * f + 1])), 1e-12 * real.norm());
+    }
     // Pairs: every eigenvalue twice.
     for(Eigen::Index k = 0; k + 1 < lambda.size(); k += 2)
       EXPECT_NEAR(lambda[k], lambda[k + 1], 1e-9 * lambda[lambda.size() - 1]);

@@ -148,6 +148,7 @@ public:
   Vector normalized(const Vector& z) const;
 
 private:
+  void add_boundary_diagonal(Vector& diagonal) const; // w_e of the zero boundary condition
   struct Cache;
   std::shared_ptr<const Operator_matrices> operators_;
   int n_;
