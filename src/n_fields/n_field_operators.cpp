@@ -61,7 +61,8 @@ struct N_field_operators::Cache
   std::optional<Sparse_matrix> S;
   std::optional<Eigen::SparseMatrix<std::complex<double>>> complex_S;
   std::optional<Matrix> kernel;
-  std::optional<std::vector<int>> vertex_corner; // 3 f + k of one corner of each vertex, -1: none
+  std::optional<std::vector<int>> vertex_corner;
+  std::optional<std::vector<char>> boundary_vertices; // 3 f + k of one corner of each vertex, -1: none
 };
 
 N_field_operators::N_field_operators(std::shared_ptr<const Operator_matrices> operators, int n,
@@ -80,7 +81,7 @@ N_field_operators::N_field_operators(std::shared_ptr<const Operator_matrices> op
     if(prescribed[v]) throw Invalid_input(what + ": the vertex is prescribed twice");
     prescribed[v] = 1;
     if(m.is_isolated_vertex(v)) throw Invalid_input(what + ": the vertex is in no face");
-    if(vertex_fan(v).on_boundary) throw Invalid_input(what + ": the vertex is on the boundary");
+    if(boundary_vertices()[v]) throw Invalid_input(what + ": the vertex is on the boundary");
   }
 }
 
@@ -133,18 +134,29 @@ const N_field_operators::Vector& N_field_operators::edge_weights() const
   return *cache_->weights;
 }
 
+const std::vector<char>& N_field_operators::boundary_vertices() const
+{
+  if(!cache_->boundary_vertices)
+  {
+    const Intrinsic_mesh& mesh = this->mesh();
+    std::vector<char> on_boundary(mesh.number_of_vertices(), 0);
+    for(int e = 0; e < mesh.number_of_edges(); ++e)
+      if(mesh.is_boundary_edge(e))
+        for(int v : mesh.edge_vertices(e)) on_boundary[v] = 1;
+    cache_->boundary_vertices = std::move(on_boundary);
+  }
+  return *cache_->boundary_vertices;
+}
+
 const N_field_operators::Vector& N_field_operators::vertex_curvatures() const
 {
   if(!cache_->curvatures)
   {
     const Intrinsic_mesh& mesh = this->mesh();
     Vector angle_sum = Vector::Zero(mesh.number_of_vertices());
-    std::vector<char> on_boundary(mesh.number_of_vertices(), 0);
+    const std::vector<char>& on_boundary = boundary_vertices();
     for(int f = 0; f < mesh.number_of_faces(); ++f)
       for(int k = 0; k < 3; ++k) angle_sum[mesh.face_vertices(f)[k]] += internal::corner_angle(mesh, f, k);
-    for(int e = 0; e < mesh.number_of_edges(); ++e)
-      if(mesh.is_boundary_edge(e))
-        for(int v : mesh.edge_vertices(e)) on_boundary[v] = 1;
     Vector K(mesh.number_of_vertices());
     for(int v = 0; v < K.size(); ++v)
       K[v] = mesh.is_isolated_vertex(v) ? 0. : (on_boundary[v] ? M_PI : 2 * M_PI) - angle_sum[v];

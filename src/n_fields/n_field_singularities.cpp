@@ -74,11 +74,7 @@ std::vector<int> n_field_indices(const N_field_operators& operators, const Eigen
 std::vector<N_field_singularity> n_field_singularities(const N_field_operators& operators, const Eigen::VectorXd& z)
 {
   const std::vector<int> k = n_field_indices(operators, z);
-  const Intrinsic_mesh& mesh = operators.mesh();
-  std::vector<char> on_boundary(mesh.number_of_vertices(), 0);
-  for(int e = 0; e < mesh.number_of_edges(); ++e)
-    if(mesh.is_boundary_edge(e))
-      for(int v : mesh.edge_vertices(e)) on_boundary[v] = 1;
+  const std::vector<char>& on_boundary = operators.boundary_vertices();
   std::vector<N_field_singularity> result;
   for(int v = 0; v < static_cast<int>(k.size()); ++v)
     if(k[v] != 0) result.push_back({v, k[v], on_boundary[v] != 0});

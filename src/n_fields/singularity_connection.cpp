@@ -20,10 +20,8 @@ Eigen::VectorXd singularity_connection(const N_field_operators& ops)
   const Eigen::VectorXd& area = ops.operators().vertex_masses();
   const Eigen::VectorXd& w = ops.edge_weights();
 
-  std::vector<char> boundary(nv, 0), prescribed(nv, 0);
-  for(int e = 0; e < mesh.number_of_edges(); ++e)
-    if(mesh.is_boundary_edge(e))
-      for(int v : mesh.edge_vertices(e)) boundary[v] = 1;
+  const std::vector<char>& boundary = ops.boundary_vertices();
+  std::vector<char> prescribed(nv, 0);
 
   // Target holonomy: 2 pi k / n at prescribed vertices; elsewhere the angle defect plus, on a
   // closed component, an equal share per unit area of what the prescribed ones gave up.

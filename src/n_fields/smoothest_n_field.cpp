@@ -42,10 +42,11 @@ Eigen::VectorXcd block_lanczos(const Complex_sparse_matrix& A, const Eigen::Vect
   const int max_blocks = static_cast<int>(std::min<Eigen::Index>(100, n / block));
   Sparse_hermitian_solver solver;
   solver.factor(A, "S_n of the smoothest field");
-  // Columns are added as the Krylov space grows (a preallocated n x 200 block would be
-  // 1.1 GB on 346k faces).
-  Complex_matrix V(n, 0), H(0, 0);
+  // Capacity grows by 16 columns as the Krylov space grows (a preallocated n x 200 block
+  // would be 1.1 GB on 346k faces; growing by one column would copy V every time).
+  Complex_matrix V_storage(n, 0), H(0, 0);
   int columns = 0;
+  auto V = [&]() { return V_storage.leftCols(columns); };
   // Appends the columns of W, D-orthogonalised against V and among themselves.
   auto d_norms = [&](const Complex_matrix& W) {
     return (W.cwiseAbs2().transpose() * d).cwiseSqrt().eval();
@@ -57,25 +58,27 @@ Eigen::VectorXcd block_lanczos(const Complex_sparse_matrix& A, const Eigen::Vect
     {
       const Eigen::VectorXd before = d_norms(W);
       const Complex_matrix DW = d.asDiagonal() * W; // first: V^H D W would copy V scaled
-      W -= V * (V.adjoint() * DW);
+      W -= V() * (V().adjoint() * DW);
       if((d_norms(W).array() > 0.5 * before.array()).all()) break;
     }
+    const Eigen::VectorXd entry = d_norms(W);
     for(Eigen::Index j = 0; j < W.cols(); ++j)
     {
       Eigen::VectorXcd w = W.col(j);
       for(int pass = 0; pass < 2; ++pass)
         for(int i = columns - static_cast<int>(j); i < columns; ++i)
-          w -= V.col(i).dot(d.cwiseProduct(w)) * V.col(i);
+          w -= V_storage.col(i).dot(d.cwiseProduct(w)) * V_storage.col(i);
       const double norm = std::sqrt(std::real(w.dot(d.cwiseProduct(w))));
-      if(!(norm > 1e-12)) throw Numerical_failure("smoothest n-field: the Krylov space closed");
-      V.conservativeResize(Eigen::NoChange, columns + 1);
-      V.col(columns++) = w / norm;
+      // Nothing new left of the column (relative to its length): the space is invariant.
+      if(!(norm > 1e-10 * entry[j])) throw Numerical_failure("smoothest n-field: the Krylov space closed");
+      if(columns == V_storage.cols()) V_storage.conservativeResize(Eigen::NoChange, columns + 16);
+      V_storage.col(columns++) = w / norm;
     }
     // H = V^H A V grows by the new columns only.
     const int added = static_cast<int>(W.cols()), first = columns - added;
-    const Complex_matrix AW = A * V.middleCols(first, added);
+    const Complex_matrix AW = A * V_storage.middleCols(first, added);
     H.conservativeResize(columns, columns);
-    H.block(0, first, columns, added) = V.leftCols(columns).adjoint() * AW;
+    H.block(0, first, columns, added) = V().adjoint() * AW;
     H.block(first, 0, added, first) = H.block(0, first, first, added).adjoint();
   };
   std::mt19937_64 random(1);
@@ -86,11 +89,11 @@ Eigen::VectorXcd block_lanczos(const Complex_sparse_matrix& A, const Eigen::Vect
   append(start);
   for(int k = 1; k < max_blocks; ++k)
   {
-    append(solver.solve(Complex_matrix(d.asDiagonal() * V.middleCols(columns - block, block))));
+    append(solver.solve(Complex_matrix(d.asDiagonal() * V_storage.middleCols(columns - block, block))));
     if(k < 6 || k % 2) continue; // a check costs an n x columns product: every other block
     const Eigen::SelfAdjointEigenSolver<Complex_matrix> ritz(0.5 * (H + H.adjoint()));
     const double lambda = ritz.eigenvalues()[0];
-    const Eigen::VectorXcd x = V * ritz.eigenvectors().col(0);
+    const Eigen::VectorXcd x = V() * ritz.eigenvectors().col(0);
     const Eigen::VectorXcd r = A * x - lambda * d.cwiseProduct(x);
     // The residual of the symmetric form D^-1/2 A D^-1/2, relative to lambda (x is D-unit).
     const double residual = std::sqrt(r.cwiseAbs2().cwiseQuotient(d).sum()) / lambda;

@@ -97,6 +97,8 @@ public:
   const Vector& connection_angles() const;
   /// `w_e` per interior edge.
   const Vector& edge_weights() const;
+  /// Per vertex: 1 if it lies on a boundary edge.
+  const std::vector<char>& boundary_vertices() const;
   /// Per vertex: the angle defect `2 pi - sum of corner angles` at interior vertices, the
   /// turning of the boundary `pi - sum of corner angles` at boundary vertices, 0 at
   /// vertices in no face.  Their sum is `2 pi chi` (Gauss-Bonnet).

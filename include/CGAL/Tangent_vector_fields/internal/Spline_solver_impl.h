@@ -178,9 +178,21 @@ template <class Constraint, class Operators>
 void Basic_spline_solver<Constraint, Operators>::set_omega(double omega)
 {
   if(!std::isfinite(omega) || omega < 0) throw Invalid_input("the tension omega must be finite and non-negative");
+  const double previous = options_.omega;
   options_.omega = omega;
   set_scales();
-  energy_changed();
+  try
+  {
+    energy_changed();
+  }
+  catch(...)
+  {
+    // A solver may refuse an energy (Full_n_field_spline_solver: omega > 0 with m >= 3): unchanged.
+    options_.omega = previous;
+    set_scales();
+    energy_changed();
+    throw;
+  }
   // Every pull-back depends on the energy: rebuild the small system in the same order.
   std::vector<std::pair<Constraint_id, Entry>> entries(entries_.begin(), entries_.end());
   std::sort(entries.begin(), entries.end(),
