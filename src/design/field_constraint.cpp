@@ -38,8 +38,7 @@ void check_finite(const Field_constraint& c)
 // Barycentric coordinates must describe a point of the (closed) face.
 void check_barycentric(const Field_constraint& c)
 {
-  const auto& b = c.barycentric;
-  if(std::min({b[0], b[1], b[2]}) < -1e-9 || std::abs(b[0] + b[1] + b[2] - 1) > 1e-9)
+  if(!is_point_of_face(c.barycentric))
     throw Invalid_input("barycentric coordinates must be non-negative and sum to 1: " + c.describe());
 }
 
@@ -151,6 +150,12 @@ std::string Field_constraint::describe() const
     break;
   }
   return s.str();
+}
+
+bool is_point_of_face(const std::array<double, 3>& b)
+{
+  return std::isfinite(b[0] + b[1] + b[2]) && std::min({b[0], b[1], b[2]}) >= -1e-9 &&
+         std::abs(b[0] + b[1] + b[2] - 1) <= 1e-9;
 }
 
 std::array<double, 3> barycentric_coordinates(const Intrinsic_mesh& mesh, int face, const std::array<double, 3>& point)

@@ -32,12 +32,18 @@ void check_object(const internal::Json_reader& r)
   if(!r.node.data().empty() || r.node.empty()) r.fail("not a JSON object");
 }
 
-N_field_constraint parse(const internal::Json_reader& r)
+N_field_constraint parse(const internal::Json_reader& r, const Intrinsic_mesh& mesh)
 {
   check_object(r);
   const std::string type = r.node.get<std::string>("type", "");
-  if(type == "vector") return N_field_constraint::vector_in_face(r.index("face"), r.triple("vector"));
-  if(type == "direction") return N_field_constraint::direction_in_face(r.index("face"), r.triple("direction"));
+  if(type == "vector" || type == "direction")
+  {
+    const int face = r.index("face");
+    N_field_constraint c = type == "vector" ? N_field_constraint::vector_in_face(face, r.triple("vector"))
+                                            : N_field_constraint::direction_in_face(face, r.triple("direction"));
+    if(r.has("point") || r.has("barycentric")) c.barycentric = r.point(mesh, face);
+    return c;
+  }
   if(type == "singularity")
   {
     const int vertex = r.index("vertex"), k = signed_integer(r, "index");
@@ -105,7 +111,7 @@ N_field_constraint_file read_n_field_constraint_file(std::istream& in, std::shar
   {
     const internal::Json_reader r{child.second, "constraint " + std::to_string(position++)};
     if(!child.first.empty()) file_reader.fail("\"constraints\" must be an array");
-    const N_field_constraint c = parse(r);
+    const N_field_constraint c = parse(r, operators->mesh());
     try
     {
       constraint_rows(*n_operators, c);
@@ -127,7 +133,7 @@ N_field_constraint_file read_n_field_constraint_file(const std::string& path,
   return read_n_field_constraint_file(in, std::move(operators));
 }
 
-void write_n_field_constraint_file(std::ostream& out, const N_field_constraint_file& file)
+void write_n_field_constraint_file(std::ostream& out, const N_field_constraint_file& file, const Intrinsic_mesh& mesh)
 {
   auto triple = [](const std::array<double, 3>& v) {
     std::ostringstream s;
@@ -147,11 +153,18 @@ void write_n_field_constraint_file(std::ostream& out, const N_field_constraint_f
     switch(c.kind)
     {
     case N_field_constraint_kind::vector:
-      out << "\"type\": \"vector\", \"face\": " << c.face << ", \"vector\": " << triple(c.vector);
-      break;
     case N_field_constraint_kind::direction:
-      out << "\"type\": \"direction\", \"face\": " << c.face << ", \"direction\": " << triple(c.vector);
+    {
+      const bool vector = c.kind == N_field_constraint_kind::vector;
+      out << "\"type\": \"" << (vector ? "vector" : "direction") << "\", \"face\": " << c.face << ", \""
+          << (vector ? "vector" : "direction") << "\": " << triple(c.vector);
+      if(c.is_at_point())
+      {
+        const auto& v = mesh.face_vertices(c.face);
+        out << ", \"vertices\": [" << v[0] << ", " << v[1] << ", " << v[2] << "], \"barycentric\": " << triple(c.barycentric);
+      }
       break;
+    }
     case N_field_constraint_kind::singularity:
       out << "\"type\": \"singularity\", \"vertex\": " << c.vertex << ", \"index\": " << c.index;
       if(c.is_anchored()) out << ", \"face\": " << c.face << ", \"vector\": " << triple(c.vector);

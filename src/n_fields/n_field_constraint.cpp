@@ -39,6 +39,43 @@ std::complex<double> face_power(const N_field_operators& ops, const N_field_cons
   return std::polar(unit ? 1. : length * in_plane, ops.n() * std::atan2(ab[1], ab[0]));
 }
 
+// The field at the constraint's point as complex weights on face values (in the face's
+// frame): z_f + sum over interior edges of (1/3 - b_k) (rho^n z_g - z_f).
+std::vector<std::pair<int, std::complex<double>>> point_weights(const N_field_operators& ops, const N_field_constraint& c)
+{
+  if(!is_point_of_face(c.barycentric)) refuse(c, ops.n(), "barycentric coordinates must be non-negative and sum to 1");
+  std::vector<std::pair<int, std::complex<double>>> weights{{c.face, 1.}};
+  if(!c.is_at_point()) return weights;
+  const Intrinsic_mesh& mesh = ops.mesh();
+  for(int k = 0; k < 3; ++k)
+  {
+    const int e = mesh.face_edges(c.face)[k];
+    const double t = 1. / 3 - c.barycentric[k];
+    if(mesh.is_boundary_edge(e) || t == 0) continue;
+    const auto& faces = mesh.edge_faces(e);
+    const int g = faces[0] == c.face ? faces[1] : faces[0];
+    weights.front().second -= t;
+    weights.emplace_back(g, t * std::polar(1., ops.n() * ops.transport_angle(e, g)));
+  }
+  return weights;
+}
+
+// Rows Re and Im of sum_h a_h z_h (a complex weight times x + i y).
+void add_complex_rows(const std::vector<std::pair<int, std::complex<double>>>& weights, Constraint_row& re,
+                      Constraint_row& im)
+{
+  auto add = [](Constraint_row& row, int i, double x) {
+    if(x != 0) row.entries.emplace_back(i, x);
+  };
+  for(const auto& [h, a] : weights)
+  {
+    add(re, 2 * h, a.real());
+    add(re, 2 * h + 1, -a.imag());
+    add(im, 2 * h, a.imag());
+    add(im, 2 * h + 1, a.real());
+  }
+}
+
 struct Ring
 {
   N_field_operators::Vertex_fan fan;
@@ -68,7 +105,7 @@ bool N_field_constraint::same_rows_as(const N_field_constraint& other) const
   if(kind != other.kind) return false;
   switch(kind)
   {
-  case N_field_constraint_kind::vector: return face == other.face;
+  case N_field_constraint_kind::vector: return face == other.face && barycentric == other.barycentric;
   case N_field_constraint_kind::direction: return false; // the row itself holds the direction
   case N_field_constraint_kind::singularity:
     return vertex == other.vertex && index == other.index && face == other.face;
@@ -82,10 +119,10 @@ std::string N_field_constraint::describe() const
   switch(kind)
   {
   case N_field_constraint_kind::vector:
-    s << "vector (" << vector[0] << ", " << vector[1] << ", " << vector[2] << ") in face " << face;
-    break;
   case N_field_constraint_kind::direction:
-    s << "direction (" << vector[0] << ", " << vector[1] << ", " << vector[2] << ") in face " << face;
+    s << (kind == N_field_constraint_kind::vector ? "vector (" : "direction (") << vector[0] << ", " << vector[1]
+      << ", " << vector[2] << ") in face " << face;
+    if(is_at_point()) s << " at barycentric (" << barycentric[0] << ", " << barycentric[1] << ", " << barycentric[2] << ")";
     break;
   case N_field_constraint_kind::singularity:
     s << "singularity of index " << index << "/n at vertex " << vertex;
@@ -102,9 +139,13 @@ std::vector<double> constraint_values(const N_field_operators& ops, const N_fiel
   case N_field_constraint_kind::vector:
   {
     const std::complex<double> w = face_power(ops, c, false);
+    point_weights(ops, c); // checks the point
     return {w.real(), w.imag()};
   }
-  case N_field_constraint_kind::direction: face_power(ops, c, true); return {0.};
+  case N_field_constraint_kind::direction:
+    face_power(ops, c, true);
+    point_weights(ops, c);
+    return {0.};
   case N_field_constraint_kind::singularity:
   {
     std::vector<double> values(2 * (singularity_ring(ops, c).fan.faces.size() - 1), 0.);
@@ -129,18 +170,20 @@ std::vector<Constraint_row> constraint_rows(const N_field_operators& ops, const 
   {
     const std::complex<double> w = face_power(ops, c, false);
     rows.resize(2);
-    rows[0].entries = {{2 * c.face, 1.}};
+    add_complex_rows(point_weights(ops, c), rows[0], rows[1]);
     rows[0].value = w.real();
-    rows[1].entries = {{2 * c.face + 1, 1.}};
     rows[1].value = w.imag();
     break;
   }
   case N_field_constraint_kind::direction:
   {
-    // Im(conj(w) z) = Re(w) Im(z) - Im(w) Re(z) = 0.
+    // Im(conj(w) z) = Re(w) Im(z) - Im(w) Re(z) = 0, z the field at the point.
     const std::complex<double> w = face_power(ops, c, true);
+    Constraint_row re, im;
+    add_complex_rows(point_weights(ops, c), re, im);
     rows.resize(1);
-    rows[0].entries = {{2 * c.face, -w.imag()}, {2 * c.face + 1, w.real()}};
+    for(const auto& e : re.entries) rows[0].entries.emplace_back(e.first, -w.imag() * e.second);
+    for(const auto& e : im.entries) rows[0].entries.emplace_back(e.first, w.real() * e.second);
     break;
   }
   case N_field_constraint_kind::singularity:

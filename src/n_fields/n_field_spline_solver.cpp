@@ -33,6 +33,32 @@ int checked_order(int m)
   return m;
 }
 
+// The alignment, checked; active() false when it does not apply.
+const N_field_alignment& checked_alignment(const N_field_alignment& a, Eigen::Index size)
+{
+  if(!std::isfinite(a.weight) || a.weight < 0)
+    throw Invalid_input("n-field spline: the alignment weight must be finite and non-negative, got " +
+                        std::to_string(a.weight));
+  if(a.weight > 0 && a.guide.size() != size)
+    throw Invalid_input("n-field spline: the alignment guide has " + std::to_string(a.guide.size()) +
+                        " coordinates, the field " + std::to_string(size));
+  if(a.weight > 0 && !a.guide.allFinite()) throw Invalid_input("n-field spline: the alignment guide is not finite");
+  return a;
+}
+
+// s / area^m: the alignment term scales like the m-th order energy (lambda ~ 1/area).
+double effective_weight(const N_field_alignment& a, const N_field_operators& ops, int order)
+{
+  return a.active() ? a.weight / std::pow(ops.face_areas().sum(), order) : 0.;
+}
+
+int reduced_kernel_dimension(const N_field_basis* basis, int d, const N_field_alignment& alignment)
+{
+  if(!basis) return 0;
+  checked_alignment(alignment, basis->operators().masses().size());
+  return alignment.active() ? 0 : std::min(basis->kernel_dimension(), checked_size(*basis, d));
+}
+
 double row_dot(const Constraint_row& row, const Eigen::MatrixXd& X, Eigen::Index column)
 {
   double s = 0;
@@ -45,11 +71,20 @@ double row_dot(const Constraint_row& row, const Eigen::MatrixXd& X, Eigen::Index
 // --- reduced ---------------------------------------------------------------------------
 
 Reduced_n_field_spline_solver::Reduced_n_field_spline_solver(std::shared_ptr<const N_field_basis> basis,
-                                                             int basis_size, const Spline_options& options, int order)
+                                                             int basis_size, const Spline_options& options, int order,
+                                                             const N_field_alignment& alignment)
   : N_field_spline_solver(basis ? basis->shared_operators() : nullptr,
-                          basis ? std::min(basis->kernel_dimension(), checked_size(*basis, basis_size)) : 0, options),
+                          reduced_kernel_dimension(basis.get(), basis_size, alignment), options),
     basis_(std::move(basis)), d_(checked_size(*basis_, basis_size)), order_(checked_order(order))
 {
+  alignment_weight_ = effective_weight(alignment, operators(), order_);
+  if(alignment_weight_ > 0)
+  {
+    // The basis is MX-orthonormal: |Phi a - g|^2 = |a|^2 - 2 a.(Phi^T MX g) + |g|^2.
+    const Eigen::VectorXd weighted = operators().masses().cwiseProduct(alignment.guide);
+    guide_ = basis_->fields().leftCols(d_).transpose() * weighted;
+    guide_norm2_ = alignment.guide.dot(weighted);
+  }
   update_energy();
 }
 
@@ -60,9 +95,10 @@ void Reduced_n_field_spline_solver::update_energy()
   for(int k = 0; k < d_; ++k)
   {
     const double lambda = basis_->eigenvalue(k);
-    energy_[k] = k < harmonic_dimension() ? 0. : std::pow(lambda, order_) + omega_ * lambda;
+    energy_[k] = (k < harmonic_dimension() ? 0. : std::pow(lambda, order_) + omega_ * lambda) + alignment_weight_;
     inverse_energy_[k] = energy_[k] > 0 ? 1 / energy_[k] : 0.;
   }
+  if(alignment_weight_ > 0) aligned_ = alignment_weight_ * guide_.cwiseProduct(inverse_energy_);
 }
 
 void Reduced_n_field_spline_solver::pull_back(std::vector<Row>& rows) const
@@ -85,7 +121,9 @@ double Reduced_n_field_spline_solver::apply(const Row& row, const Eigen::VectorX
 double Reduced_n_field_spline_solver::energy(const Eigen::VectorXd& a) const
 {
   const int h = harmonic_dimension();
-  return a.cwiseAbs2().dot(energy_) + harmonic_penalty_ * a.head(h).squaredNorm();
+  double e = a.cwiseAbs2().dot(energy_) + harmonic_penalty_ * a.head(h).squaredNorm();
+  if(alignment_weight_ > 0) e += alignment_weight_ * (guide_norm2_ - 2 * a.dot(guide_));
+  return e;
 }
 
 void Reduced_n_field_spline_solver::add_harmonic(const Eigen::VectorXd& z, Eigen::VectorXd& a) const
@@ -108,15 +146,34 @@ struct Full_n_field_spline_solver::Factors
 {
   Sparse_spd_solver S;                  // S_n, one face per kernel component held at 0
   std::optional<Sparse_spd_solver> screened; // S_n + omega MX (m = 2, omega > 0)
+  std::optional<Sparse_spd_solver> aligned;  // the whole energy, with the alignment
   std::vector<int> pinned;              // unknowns held at 0
 };
 
+namespace {
+
+int full_kernel_dimension(const N_field_operators* ops, const N_field_alignment& alignment)
+{
+  if(!ops) return 0;
+  checked_alignment(alignment, ops->masses().size());
+  return alignment.active() ? 0 : static_cast<int>(ops->kernel().cols());
+}
+
+} // namespace
+
 Full_n_field_spline_solver::Full_n_field_spline_solver(std::shared_ptr<const N_field_operators> operators,
-                                                       const Spline_options& options, int order)
-  : N_field_spline_solver(operators, operators ? static_cast<int>(operators->kernel().cols()) : 0, options),
-    order_(checked_order(order)), factors_(std::make_unique<Factors>())
+                                                       const Spline_options& options, int order,
+                                                       const N_field_alignment& alignment)
+  : N_field_spline_solver(operators, full_kernel_dimension(operators.get(), alignment), options),
+    order_(checked_order(order)), alignment_(alignment), factors_(std::make_unique<Factors>())
 {
   const N_field_operators& ops = this->operators();
+  alignment_weight_ = effective_weight(alignment_, ops, order_);
+  if(alignment_weight_ > 0)
+  {
+    energy_changed(); // no kernel to hold: the energy is positive definite
+    return;
+  }
   const Eigen::MatrixXd& K = ops.kernel();
   // Hold the first face of each kernel pair's component: parallel fields never vanish.
   for(Eigen::Index j = 0; j < K.cols(); j += 2)
@@ -145,6 +202,21 @@ int Full_n_field_spline_solver::space_dimension() const { return static_cast<int
 
 void Full_n_field_spline_solver::energy_changed()
 {
+  if(alignment_weight_ > 0)
+  {
+    // S_n (MX^-1 S_n)^(m-1) + omega S_n + s MX: sparse (two-ring for m = 2), positive definite.
+    const N_field_operators& ops = operators();
+    const Eigen::SparseMatrix<double>& S = ops.S();
+    const Eigen::VectorXd inverse_mass = ops.masses().cwiseInverse();
+    Eigen::SparseMatrix<double> A = S;
+    for(int k = 1; k < order_; ++k) A = (S * (inverse_mass.asDiagonal() * A)).pruned();
+    A += omega_ * S;
+    A.diagonal() += alignment_weight_ * ops.masses();
+    factors_->aligned.emplace();
+    factors_->aligned->factor(A, "the aligned n-field energy");
+    aligned_ = factors_->aligned->solve(Eigen::VectorXd(alignment_weight_ * ops.masses().cwiseProduct(alignment_.guide)));
+    return;
+  }
   if(order_ >= 3 && omega_ > 0)
     throw Invalid_input("full n-field spline: a tension omega > 0 is supported with m = 1 or 2 only (m = " +
                         std::to_string(order_) + ")");
@@ -169,6 +241,16 @@ void Full_n_field_spline_solver::pull_back(std::vector<Row>& rows) const
   Eigen::MatrixXd B = Eigen::MatrixXd::Zero(n, c);
   for(Eigen::Index j = 0; j < c; ++j)
     for(const auto& e : rows[j].row.entries) B(e.first, j) += e.second;
+  if(factors_->aligned)
+  {
+    const Eigen::MatrixXd Y = factors_->aligned->solve(B);
+    for(Eigen::Index j = 0; j < c; ++j)
+    {
+      rows[j].y = Y.col(j);
+      rows[j].harmonic.resize(0);
+    }
+    return;
+  }
   auto remove_kernel = [&](Eigen::MatrixXd& X, bool weighted_rhs) {
     if(K.cols() == 0) return;
     // weighted_rhs: X -= MX K (K^T X) (a right-hand side); else X -= K (K^T MX X) (a solution).
@@ -206,6 +288,11 @@ double Full_n_field_spline_solver::energy(const Eigen::VectorXd& z) const
   const N_field_operators& ops = operators();
   const Eigen::MatrixXd& K = ops.kernel();
   double e = ops.m_harmonic_energy(z, order_) + omega_ * ops.dirichlet_energy(z);
+  if(alignment_weight_ > 0)
+  {
+    const Eigen::VectorXd off = z - alignment_.guide;
+    return e + alignment_weight_ * off.dot(ops.masses().cwiseProduct(off));
+  }
   if(K.cols() > 0) e += harmonic_penalty_ * (K.transpose() * ops.masses().cwiseProduct(z)).squaredNorm();
   return e;
 }

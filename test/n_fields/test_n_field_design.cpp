@@ -471,10 +471,12 @@ TEST(NFieldConstraintFile, RoundTripAndRefusalsWithTheirReason)
   file.singularities = {{interior, -1}};
   file.constraints = random_vector_constraints(mesh, 2, 59);
   file.constraints.push_back(TVF::N_field_constraint::direction_in_face(5, mesh.from_frame(5, 0.3, 0.7)));
+  file.constraints.push_back(
+      TVF::N_field_constraint::vector_at_point(9, {0.1, 0.7, 0.2}, mesh.from_frame(9, 0.5, 1.0 / 7)));
   const int anchor = nops->vertex_fan(interior).faces[1];
   file.constraints.push_back(TVF::N_field_constraint::singularity_at_vertex(interior, 1, anchor, mesh.from_frame(anchor, 0.1, 1.0 / 3)));
   std::stringstream text;
-  TVF::write_n_field_constraint_file(text, file);
+  TVF::write_n_field_constraint_file(text, file, mesh);
   const TVF::N_field_constraint_file read = TVF::read_n_field_constraint_file(text, ops.shared_matrices());
   EXPECT_EQ(read.n, 4);
   EXPECT_EQ(read.omega, 0.25);
@@ -488,6 +490,7 @@ TEST(NFieldConstraintFile, RoundTripAndRefusalsWithTheirReason)
     EXPECT_EQ(read.constraints[i].vertex, file.constraints[i].vertex);
     EXPECT_EQ(read.constraints[i].index, file.constraints[i].index);
     EXPECT_EQ(read.constraints[i].vector, file.constraints[i].vector); // bit for bit (17 digits)
+    EXPECT_EQ(read.constraints[i].barycentric, file.constraints[i].barycentric);
   }
   auto reason = [&](const std::string& json) {
     std::istringstream in(json);

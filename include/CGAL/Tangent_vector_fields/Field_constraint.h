@@ -107,6 +107,11 @@ struct Field_constraint
 /// \throws Invalid_input for a face out of range or a non-finite point.
 std::array<double, 3> barycentric_coordinates(const Intrinsic_mesh& mesh, int face, const std::array<double, 3>& point);
 
+/// True if `b` are the barycentric coordinates of a point of a (closed) face: finite,
+/// non-negative and summing to 1, each up to 1e-9 (rounding of coordinates typed in or
+/// computed by `barycentric_coordinates`).
+bool is_point_of_face(const std::array<double, 3>& b);
+
 /// Reorders barycentric `weights` given for the vertices `vertices` (any order of the
 /// face's three vertices) into the order of `mesh.face_vertices(face)`.
 /// \throws Invalid_input if `vertices` are not the vertices of `face`.

@@ -33,6 +33,11 @@ struct N_field_constraint
   int vertex = -1; ///< singularity
   std::array<double, 3> vector = {{0, 0, 0}}; ///< any one of the n vectors (3D, projected onto the face)
   int index = 0;   ///< singularity: `k`, the field turns by `2 pi k / n` around the vertex
+  /// Vector, direction: the point of `face` (barycentric, in the order of the face's
+  /// vertices) where the field is constrained; the centroid (default) constrains the face's
+  /// own value.  Elsewhere the constraint acts on the field interpolated at the point (see
+  /// `vector_at_point`).
+  std::array<double, 3> barycentric = {{1. / 3, 1. / 3, 1. / 3}};
 
   /// The n vectors of face `face` are `v` (projected onto the face) and its turns by `2 pi j / n`.
   static N_field_constraint vector_in_face(int face, const std::array<double, 3>& v)
@@ -51,6 +56,35 @@ struct N_field_constraint
     N_field_constraint c = vector_in_face(face, d);
     c.kind = N_field_constraint_kind::direction;
     return c;
+  }
+  /// The n-field at a point of `face` (barycentric coordinates, see
+  /// `barycentric_coordinates` for a 3D point): its value there is the face's own plus, per
+  /// interior edge, `(1/3 - b_k) (rho^n z_g - z_f)` with `b_k` the coordinate of the corner
+  /// opposite the edge and `z_g` the neighbour across it, carried into `f` by the surface's
+  /// transport.  That is the Crouzeix-Raviart interpolant (edge midpoints take the mean of
+  /// their two faces) moved so that the centroid keeps the face's value; it reproduces
+  /// fields that are linear in the plane wherever neighbouring triangles are point
+  /// reflections of each other (regular grids), and a point constraint touches at most 4 faces.
+  static N_field_constraint vector_at_point(int face, const std::array<double, 3>& barycentric,
+                                            const std::array<double, 3>& v)
+  {
+    N_field_constraint c = vector_in_face(face, v);
+    c.barycentric = barycentric;
+    return c;
+  }
+  /// `direction_in_face` at a point of `face` (interpolated as in `vector_at_point`).
+  static N_field_constraint direction_at_point(int face, const std::array<double, 3>& barycentric,
+                                               const std::array<double, 3>& d)
+  {
+    N_field_constraint c = direction_in_face(face, d);
+    c.barycentric = barycentric;
+    return c;
+  }
+  /// True unless the constraint is at the centroid of its face (vector, direction).
+  bool is_at_point() const
+  {
+    return kind != N_field_constraint_kind::singularity &&
+           !(barycentric[0] == 1. / 3 && barycentric[1] == 1. / 3 && barycentric[2] == 1. / 3);
   }
   /// A singularity of index `k / n` at interior vertex `vertex`.  Formulation (one-ring
   /// relations, SPEC 10 (a)): with faces `f_0 .. f_{m-1}` counter-clockwise around the vertex,
@@ -90,8 +124,8 @@ struct N_field_constraint
 };
 
 /// The rows of `constraint` on the power representation (`2nf` unknowns).
-/// \throws Invalid_input for an index out of range, non-finite numbers, a zero vector or
-///         direction, one normal to its face, a singularity at a boundary or isolated
+/// \throws Invalid_input for an index out of range, non-finite numbers, barycentric
+///         coordinates that are negative or do not sum to 1 (1e-9), a zero vector or direction, one normal to its face, a singularity at a boundary or isolated
 ///         vertex, or one whose turning per face `|phi|` is `pi` or more.
 std::vector<Constraint_row> constraint_rows(const N_field_operators& operators, const N_field_constraint& constraint);
 

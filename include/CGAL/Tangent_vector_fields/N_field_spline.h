@@ -30,6 +30,10 @@ namespace Tangent_vector_fields {
 ///   span (microseconds per edit; `basis()` can be saved with `N_field_basis::save`);
 /// - `spline_tension` (double, default 0): `omega`, for the mesh scaled to unit area;
 /// - `n_field_boundary` (`N_field_boundary`, default `free`);
+/// - `alignment_field_map`: a readable face map of `Vector_3`, any one of the n vectors of a
+///   guide field per face (its length weights it), e.g. from `curvature_direction_field`;
+///   the energy gains `s |z - guide|^2` (see `N_field_alignment`);
+/// - `alignment_weight` (double, default 1): `s`, for the mesh scaled to unit area;
 /// - `progress_callback`, `eigensolver_tolerance`: for the basis;
 /// - the named parameters of `Discrete_operators`.
 /// The energy order `m` and prescribed singularities built into the connection (see
@@ -70,10 +74,11 @@ public:
       basis_options.progress = choose_parameter(get_parameter(np, internal_np::progress_callback),
                                                 std::function<void(const Spectral_progress&)>());
       basis_ = std::make_shared<const N_field_basis>(operators_, d, basis_options);
-      solver_ = std::make_unique<Reduced_n_field_spline_solver>(basis_, basis_->size(), spline_options, order);
+      solver_ = std::make_unique<Reduced_n_field_spline_solver>(basis_, basis_->size(), spline_options, order,
+                                                                alignment(np));
     }
     else
-      solver_ = std::make_unique<Full_n_field_spline_solver>(operators_, spline_options, order);
+      solver_ = std::make_unique<Full_n_field_spline_solver>(operators_, spline_options, order, alignment(np));
   }
 
   /// Reduced on a basis computed before (e.g. `N_field_basis::load`ed for this mesh, with
@@ -95,7 +100,7 @@ public:
     operators_ = basis_->shared_operators();
     Spline_options spline_options;
     spline_options.omega = choose_parameter(get_parameter(np, internal_np::spline_tension), 0.);
-    solver_ = std::make_unique<Reduced_n_field_spline_solver>(basis_, d, spline_options, order);
+    solver_ = std::make_unique<Reduced_n_field_spline_solver>(basis_, d, spline_options, order, alignment(np));
   }
 
   /// The n-field's vectors in face `f` are `v` (projected) and its turns by `2 pi j / n`.
@@ -159,6 +164,18 @@ public:
   std::shared_ptr<const N_field_basis> basis() const { return basis_; }
 
 private:
+  template <class NamedParameters>
+  N_field_alignment alignment(const NamedParameters& np) const
+  {
+    N_field_alignment a;
+    if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::alignment_field_map_t>::value)
+    {
+      a.guide = operators_->from_vectors(adapter_->read_field(parameters::get_parameter(np, internal_np::alignment_field_map)));
+      a.weight = parameters::choose_parameter(parameters::get_parameter(np, internal_np::alignment_weight), 1.);
+    }
+    return a;
+  }
+
   template <class T>
   static std::array<double, 3> triple(const T& v)
   {
@@ -176,7 +193,8 @@ private:
 /// \brief One-shot n-field spline at full resolution, written into `out` (first vector per
 /// face, with the field's magnitude).
 /// \param constraints index-based constraints (see `N_field_constraint`)
-/// \param np `spline_tension`, `n_field_boundary` and the named parameters of `Discrete_operators`
+/// \param np `spline_tension`, `n_field_boundary`, `alignment_field_map`, `alignment_weight` and
+///        the named parameters of `Discrete_operators`
 /// \returns the report; \throws Infeasible_constraints if the constraints contradict each other
 template <class TriangleMesh, class FaceVectorMap, class NamedParameters = parameters::Default_named_parameters>
 Spline_report n_field_spline(const TriangleMesh& mesh, int n, const std::vector<N_field_constraint>& constraints,

@@ -23,6 +23,23 @@
 namespace CGAL {
 namespace Tangent_vector_fields {
 
+/// \brief A soft alignment of an n-field spline to a guide field `g`: the energy gains
+/// `s |z - g|^2_MX`, which draws the field toward the guide where the constraints leave it
+/// free (e.g. principal curvature directions, see `curvature_direction_field`).
+///
+/// `s` is given for the mesh scaled to unit area, like the tension: the term is
+/// `(weight / area^m) |z - g|^2_MX` for energy order m, so that the result does not depend on
+/// the mesh's scale.  The guide's magnitude weights it: where `|g|` is small (umbilic
+/// regions of a curvature guide) the term mostly pulls the field's length down.  With a
+/// positive weight no field has zero energy: parallel fields lose their special part.
+struct N_field_alignment
+{
+  Eigen::VectorXd guide; ///< power representation (`2nf`, `N_field_operators::from_vectors`); empty: none
+  double weight = 0;     ///< `s >= 0`; 0: no alignment
+
+  bool active() const { return weight > 0 && guide.size() > 0; }
+};
+
 /// The n-field spline solvers' common part (constraints, edits, small system, report).
 typedef Basic_spline_solver<N_field_constraint, N_field_operators> N_field_spline_solver;
 extern template class Basic_spline_solver<N_field_constraint, N_field_operators>;
@@ -35,10 +52,13 @@ class Reduced_n_field_spline_solver : public N_field_spline_solver
 {
 public:
   /// `basis_size`: elements of the basis used (0: all); even, so that the truncated basis
-  /// turns with the field.  `order`: m >= 1.
-  /// \throws Invalid_input for an odd or too large basis size, or m < 1.
+  /// turns with the field.  `order`: m >= 1.  With an alignment the guide is projected onto
+  /// the basis (its part outside the span is lost).
+  /// \throws Invalid_input for an odd or too large basis size, m < 1, or an alignment
+  ///         with a negative or non-finite weight or a guide of the wrong size or not finite.
   Reduced_n_field_spline_solver(std::shared_ptr<const N_field_basis> basis, int basis_size = 0,
-                                const Spline_options& options = Spline_options(), int order = 2);
+                                const Spline_options& options = Spline_options(), int order = 2,
+                                const N_field_alignment& alignment = N_field_alignment());
 
   int basis_size() const { return d_; }
   int order() const { return order_; }
@@ -57,6 +77,7 @@ protected:
   std::string dependency_hint() const override;
   void energy_changed() override { update_energy(); }
   std::string kernel_noun() const override { return "parallel-field"; }
+  const Eigen::VectorXd& unconstrained_minimiser() const override { return aligned_; }
 
 private:
   void update_energy();
@@ -64,6 +85,10 @@ private:
   std::shared_ptr<const N_field_basis> basis_;
   int d_;
   int order_;
+  double alignment_weight_ = 0;     // s / area^m, for the mesh as given
+  Eigen::VectorXd guide_;           // the guide's coefficients Phi^T MX g
+  double guide_norm2_ = 0;          // |g|^2_MX
+  Eigen::VectorXd aligned_;         // the minimiser without constraints (empty: none)
   Eigen::VectorXd inverse_energy_; // 1 / D_k, 0 on the kernel
   Eigen::VectorXd energy_;
 };
@@ -75,13 +100,17 @@ private:
 /// `S_n u = r~`, then `(S_n + omega MX) y = MX u` for m = 2, or `y = u / (1 + omega)` for
 /// m = 1; for m >= 3 (omega = 0 only) `S_n` is applied inversely m times.  `S_n` is
 /// factored once (CHOLMOD); on a component with parallel fields one face is held at 0,
-/// which leaves the solution exact because `r~` is orthogonal to them.
+/// which leaves the solution exact because `r~` is orthogonal to them.  With an alignment
+/// `s |z - g|^2_MX` the energy `S_n (MX^-1 S_n)^(m-1) + omega S_n + s MX` is positive definite:
+/// it is formed (two-ring stencil for m = 2) and factored once instead.
 class Full_n_field_spline_solver : public N_field_spline_solver
 {
 public:
-  /// \throws Invalid_input for m < 1, or m >= 3 with omega > 0.
+  /// \throws Invalid_input for m < 1, m >= 3 with omega > 0 and no alignment, or an
+  ///         alignment with a negative or non-finite weight or a guide of the wrong size or not finite.
   Full_n_field_spline_solver(std::shared_ptr<const N_field_operators> operators,
-                             const Spline_options& options = Spline_options(), int order = 2);
+                             const Spline_options& options = Spline_options(), int order = 2,
+                             const N_field_alignment& alignment = N_field_alignment());
   ~Full_n_field_spline_solver();
 
   int order() const { return order_; }
@@ -95,10 +124,14 @@ protected:
   int space_dimension() const override;
   void energy_changed() override;
   std::string kernel_noun() const override { return "parallel-field"; }
+  const Eigen::VectorXd& unconstrained_minimiser() const override { return aligned_; }
 
 private:
   struct Factors;
   int order_;
+  N_field_alignment alignment_;
+  double alignment_weight_ = 0; // s / area^m, for the mesh as given
+  Eigen::VectorXd aligned_;     // the minimiser without constraints (empty: none)
   std::unique_ptr<Factors> factors_;
 };
 

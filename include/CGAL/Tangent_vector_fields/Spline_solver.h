@@ -60,7 +60,8 @@ struct Spline_report
   int undetermined_harmonic = 0;
   /// Largest `|C~_i x - c_i|`, relative to the largest `|c|` (or absolute if all are 0).
   double constraint_residual = 0;
-  /// `E_B(x) + omega_eff E_D(x)` of the solution, for the mesh as given.
+  /// `E_B(x) + omega_eff E_D(x)` of the solution, for the mesh as given (n-field splines
+  /// with a soft alignment add its term, see `N_field_alignment`).
   double energy = 0;
   std::vector<std::string> warnings;
 };
@@ -153,6 +154,10 @@ protected:
   virtual void energy_changed() {}
   /// What the zero-energy fields are called in messages ("harmonic", "parallel").
   virtual std::string kernel_noun() const { return "harmonic"; }
+  /// The minimiser without constraints, in the solver's space: empty (zero) unless the
+  /// energy has a linear term (a soft alignment to a guide field); the spline is then this
+  /// plus a combination of the pull-backs.
+  virtual const Eigen::VectorXd& unconstrained_minimiser() const { return no_offset_; }
 
   /// The solution in the solver's space (coefficients or frame coordinates).
   const Eigen::VectorXd& solution() const;
@@ -184,6 +189,7 @@ private:
   mutable bool solved_ = false, reported_ = false;
   mutable Eigen::VectorXd solution_;
   mutable Spline_report report_;
+  const Eigen::VectorXd no_offset_;
 };
 
 /// The tangent vector field spline solvers' common part.

@@ -18,6 +18,8 @@
 ///   "constraints": [
 ///     {"type": "vector",      "face": 12, "vector": [1, 0, 0]},        any one of the n vectors, with its length
 ///     {"type": "direction",   "face": 3,  "direction": [0, 1, 0]},
+///     {"type": "vector", "face": 7, "point": [0.1, 0.2, 0.3], "vector": [1, 0, 0]},   at a point of the face
+///     {"type": "vector", "face": 7, "vertices": [4, 8, 2], "barycentric": [0.2, 0.3, 0.5], "vector": [1, 0, 0]},
 ///     {"type": "singularity", "vertex": 9, "index": -1},               one-ring relations (editable in real time)
 ///     {"type": "singularity", "vertex": 9, "index": -1, "face": 20, "vector": [0, 1, 0]}   anchored
 ///   ]
@@ -54,8 +56,9 @@ N_field_constraint_file read_n_field_constraint_file(std::istream& in, std::shar
 N_field_constraint_file read_n_field_constraint_file(const std::string& path,
                                                      std::shared_ptr<const Operator_matrices> operators);
 
-/// Writes a file `read_n_field_constraint_file` reads back exactly (17 digits).
-void write_n_field_constraint_file(std::ostream& out, const N_field_constraint_file& file);
+/// Writes a file `read_n_field_constraint_file` reads back exactly (17 digits); points as
+/// `"vertices"` and `"barycentric"` of `mesh`.
+void write_n_field_constraint_file(std::ostream& out, const N_field_constraint_file& file, const Intrinsic_mesh& mesh);
 
 } // namespace Tangent_vector_fields
 } // namespace CGAL

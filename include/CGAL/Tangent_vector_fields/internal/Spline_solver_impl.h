@@ -90,11 +90,14 @@ void Basic_spline_solver<Constraint, Operators>::insert(const std::vector<Constr
     if(!(independence >= options_.dependency_tolerance))
     {
       // The value the other rows already imply for this one: K^-1 k combines them.
-      double implied = 0;
+      // With an unconstrained minimiser x0 the rows act on x - x0.
+      const Eigen::VectorXd& x0 = unconstrained_minimiser();
+      auto offset = [&](const Row& r) { return x0.size() > 0 ? apply(r, x0) : 0.; };
+      double implied = offset(rows[j]);
       if(n > 0)
       {
         const Eigen::VectorXd alpha = system_->solve_K(k);
-        for(int i = 0; i < n; ++i) implied += alpha[i] * rows_[i].row.value;
+        for(int i = 0; i < n; ++i) implied += alpha[i] * (rows_[i].row.value - offset(rows_[i]));
       }
       const double residual = std::abs(rows[j].row.value - implied);
       const std::string hint = dependency_hint();
@@ -245,11 +248,12 @@ template <class Constraint, class Operators>
 void Basic_spline_solver<Constraint, Operators>::solve() const
 {
   const int n = number_of_rows();
+  const Eigen::VectorXd& x0 = unconstrained_minimiser();
   Eigen::VectorXd c(n);
-  for(int i = 0; i < n; ++i) c[i] = rows_[i].row.value;
+  for(int i = 0; i < n; ++i) c[i] = rows_[i].row.value - (x0.size() > 0 ? apply(rows_[i], x0) : 0.);
   Eigen::VectorXd mu, z;
   system_->solve(c, mu, z);
-  solution_ = Eigen::VectorXd::Zero(space_dimension());
+  solution_ = x0.size() > 0 ? x0 : Eigen::VectorXd::Zero(space_dimension());
   for(int i = 0; i < n; ++i) solution_ += mu[i] * rows_[i].y;
   if(z.size() > 0) add_harmonic(z, solution_);
   if(!solution_.allFinite()) throw Numerical_failure("the spline solve produced non-finite values");
