@@ -7,9 +7,9 @@ packages=(
   build-essential cmake
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev
   libboost-program-options-dev               # the command-line tool tvf
-  libeigen3-dev libspectra-dev
+  libeigen3-dev
   libsuitesparse-dev libopenblas0-pthread   # CHOLMOD, with OpenBLAS as its BLAS (about 3x faster than the reference BLAS)
-  libgtest-dev libbenchmark-dev
+  libgtest-dev
   libcairo2-dev pkg-config fonts-dejavu-core # pictures: Field_renderer (PNG, SVG) and its text
   libcgal-demo                               # CGAL's data tree: the default mesh and the test meshes
   chromium                                   # the editor's end-to-end test (headless)

@@ -67,6 +67,7 @@ async function checkFieldMatches(page, constraint, what) {
 
 async function main() {
   const o = options(process.argv);
+  console.log(`node ${process.version}`); // the page's packages must run on Debian 12's node 18
   // ESM imports ignore NODE_PATH: resolve playwright-core from the build's node_modules.
   const require = createRequire(path.join(path.resolve(o.nodeModules), '..', 'package.json'));
   const { chromium } = require('playwright-core');
