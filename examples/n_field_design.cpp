@@ -6,8 +6,9 @@
 //   2. the classical first-order design: minimise E_D subject to a few crosses;
 //   3. the higher-order spline: minimise E_B = |L_n z|^2 subject to the same crosses,
 //      exact and reduced on a basis of the lowest eigenfields (an edit timed);
-// and a cross field with two prescribed singularities (+1/4, -1/4) built into the
-// connection.  Prints energies and singularities (Poincare-Hopf: indices sum to 4 chi), and
+// a cross field with two prescribed singularities (+1/4, -1/4) built into the connection;
+// and 4. cross fields softly aligned to the principal curvature directions (CGAL's jet
+// fitting), smoothest and spline, against their unaligned versions.  Prints energies and singularities (Poincare-Hopf: indices sum to 4 chi), and
 // writes the fields (first vector per face) as PLY face properties.
 //
 // Usage: n_field_design [mesh] [output-prefix] [number-of-eigenfields]
@@ -17,6 +18,7 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <CGAL/Tangent_vector_fields/N_field_spline.h>
+#include <CGAL/Tangent_vector_fields/curvature_direction_field.h>
 #include <CGAL/Tangent_vector_fields/face_field_io.h>
 #include <CGAL/Tangent_vector_fields/smoothest_n_field.h>
 
@@ -53,6 +55,27 @@ std::pair<double, double> energies(const TVF::N_field_operators& ops, const Mesh
   }
   const Eigen::VectorXd z = ops.from_vectors(x);
   return {ops.dirichlet_energy(z), ops.m_harmonic_energy(z, 2)};
+}
+
+// Mean angle (degrees) between the crosses of `field` and those of `guide`, weighted by the
+// guide's length (where the curvature defines a direction).
+double angle_to_guide(const TVF::N_field_operators& ops, const Mesh& mesh, Mesh::Property_map<Face_index, K::Vector_3> field,
+                      Mesh::Property_map<Face_index, K::Vector_3> guide)
+{
+  double sum = 0, weight = 0;
+  for(Face_index f : mesh.faces())
+  {
+    const int i = static_cast<int>(f);
+    const auto u = ops.mesh().to_frame(i, {field[f].x(), field[f].y(), field[f].z()});
+    const auto g = ops.mesh().to_frame(i, {guide[f].x(), guide[f].y(), guide[f].z()});
+    const double w = std::hypot(g[0], g[1]);
+    if(w == 0 || std::hypot(u[0], u[1]) == 0) continue;
+    // The crosses' angle: the difference of 4 theta, wrapped, over 4.
+    const double d = std::remainder(4 * (std::atan2(u[1], u[0]) - std::atan2(g[1], g[0])), 2 * M_PI) / 4;
+    sum += w * std::abs(d);
+    weight += w;
+  }
+  return weight > 0 ? sum / weight * 180 / M_PI : 0;
 }
 
 } // namespace
@@ -141,13 +164,35 @@ int main(int argc, char** argv)
     if(index[a] != 1 || index[b] != -1) return 1;
   }
 
-  for(const char* name : {"smoothest", "first_order", "spline", "reduced", "prescribed"})
+  // 4. Aligned to the principal curvature directions: a guide of weight |k1 - k2| per face.
+  auto curvature = mesh.add_property_map<Face_index, K::Vector_3>("f:curvature", CGAL::NULL_VECTOR).first;
+  auto aligned = mesh.add_property_map<Face_index, K::Vector_3>("f:aligned", CGAL::NULL_VECTOR).first;
+  auto aligned_spline = mesh.add_property_map<Face_index, K::Vector_3>("f:aligned_spline", CGAL::NULL_VECTOR).first;
+  const TVF::Curvature_direction_report fit = TVF::curvature_direction_field(mesh, curvature);
+  const auto aligned_singular =
+      TVF::smoothest_n_field(mesh, 4, aligned, TVF::parameters::alignment_field_map(curvature).alignment_weight(10.));
+  TVF::N_field_spline<Mesh> design_aligned(mesh, 4,
+                                           TVF::parameters::alignment_field_map(curvature).alignment_weight(1e4));
+  for(const auto& [f, v] : crosses) design_aligned.add_vector(f, v);
+  design_aligned.field(aligned_spline);
+  const double before = angle_to_guide(ops, mesh, smoothest, curvature), after = angle_to_guide(ops, mesh, aligned, curvature);
+  std::cout << "curvature directions by jet fitting (" << fit.fitted_vertices << " vertices fitted, " << fit.unfitted_vertices
+            << " not)\n"
+            << "  smoothest cross field: " << before << " degrees from them on average; aligned (weight 10): " << after
+            << " degrees, " << aligned_singular.size() << " singularities\n"
+            << "  six crosses, spline: " << angle_to_guide(ops, mesh, spline, curvature) << " degrees; aligned (weight 1e4): "
+            << angle_to_guide(ops, mesh, aligned_spline, curvature) << " degrees\n";
+  if(!(after < before)) return 1;
+
+  for(const char* name : {"smoothest", "first_order", "spline", "reduced", "prescribed", "curvature", "aligned",
+                          "aligned_spline"})
   {
     auto map = mesh.property_map<Face_index, K::Vector_3>(std::string("f:") + name).first;
     TVF::add_face_field_properties(mesh, name, map);
   }
   std::ofstream out(prefix + ".ply", std::ios::binary);
   CGAL::IO::write_PLY(out, mesh);
-  std::cout << "wrote " << prefix << ".ply (face properties smoothest, first_order, spline, reduced, prescribed)\n";
+  std::cout << "wrote " << prefix << ".ply (face properties smoothest, first_order, spline, reduced, prescribed, curvature, "
+               "aligned, aligned_spline)\n";
   return index_sum(singular) == 4 * chi ? 0 : 1;
 }

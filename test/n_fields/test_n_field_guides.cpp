@@ -11,7 +11,9 @@
 #include <CGAL/Tangent_vector_fields/N_field_basis.h>
 #include <CGAL/Tangent_vector_fields/N_field_spline.h>
 #include <CGAL/Tangent_vector_fields/N_field_spline_solver.h>
+#include <CGAL/Tangent_vector_fields/curvature_direction_field.h>
 #include <CGAL/Tangent_vector_fields/errors.h>
+#include <CGAL/Tangent_vector_fields/smoothest_n_field.h>
 
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
@@ -39,6 +41,27 @@ Mesh make_regular_grid(int k)
       const int p00 = j * (k + 1) + i, p10 = p00 + 1, p01 = p00 + k + 1, p11 = p01 + 1;
       triangles.push_back({p00, p10, p11});
       triangles.push_back({p00, p11, p01});
+    }
+  return make_mesh(points, triangles);
+}
+
+// An open cylinder of radius r about the z axis, z in [-1, 1]: m vertices around, k rows of triangles.
+Mesh make_cylinder(int m, int k, double r)
+{
+  std::vector<Point_3> points;
+  for(int j = 0; j <= k; ++j)
+    for(int i = 0; i < m; ++i)
+    {
+      const double t = 2 * M_PI * (i + 0.5 * (j % 2)) / m; // staggered rows: no preferred diagonal
+      points.emplace_back(r * std::cos(t), r * std::sin(t), -1 + 2. * j / k);
+    }
+  std::vector<std::array<int, 3>> triangles;
+  for(int j = 0; j < k; ++j)
+    for(int i = 0; i < m; ++i)
+    {
+      const int a = j * m + i, b = j * m + (i + 1) % m, c = (j + 1) * m + i, d = (j + 1) * m + (i + 1) % m;
+      triangles.push_back({a, b, d});
+      triangles.push_back({a, d, c});
     }
   return make_mesh(points, triangles);
 }
@@ -340,4 +363,72 @@ TEST(NFieldAlignment, RefusedWithTheirReasonAndTheGenericInterface)
     const auto v = ops->mesh().from_frame(int(f), expected[2 * f], expected[2 * f + 1]);
     EXPECT_LT((out[f] - Vector_3(v[0], v[1], v[2])).squared_length(), 1e-20);
   }
+}
+
+TEST(CurvatureDirections, CircumferentialOnACylinderNothingOnASphereAndScaleFree)
+{
+  const Mesh cylinder = make_cylinder(48, 40, 0.5);
+  const auto ops = n_field_operators(cylinder, 2);
+  const TVF::Intrinsic_mesh& mesh = ops->mesh();
+  TVF::Curvature_direction_report report;
+  const Eigen::VectorXd x = TVF::curvature_directions(mesh, &report);
+  EXPECT_EQ(report.unfitted_vertices, 0);
+  EXPECT_NEAR(report.curvature_scale, 2., 0.05); // |k1| + |k2| = 1 / r
+  int tested = 0;
+  for(int f = 0; f < mesh.number_of_faces(); ++f)
+  {
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for(int v : mesh.face_vertices(f)) c += to_eigen(mesh.position(v)) / 3;
+    if(std::abs(c[2]) > 0.8) continue; // jets at the rims are one-sided
+    const Eigen::Vector3d line = to_eigen(mesh.from_frame(f, x[2 * f], x[2 * f + 1]));
+    // The circumferential direction at the centroid, in the face's plane.
+    const Eigen::Vector3d normal = to_eigen(mesh.normal(f));
+    Eigen::Vector3d around(-c[1], c[0], 0);
+    around = (around - around.dot(normal) * normal).normalized();
+    EXPECT_NEAR(line.norm(), 1., 0.05) << "face " << f;
+    EXPECT_GT(std::abs(line.normalized().dot(around)), std::cos(2 * M_PI / 180)) << "face " << f;
+    ++tested;
+  }
+  EXPECT_GT(tested, 1000);
+
+  // Scaled and moved: the same lines (up to sign), the same lengths.
+  Mesh moved = cylinder;
+  const auto R = rotation_matrix(Vector_3(1, 2, 3), 0.4);
+  transform(moved, 1e-5, R, Vector_3(3e-5, 0, 1e-5));
+  const Eigen::VectorXd y = TVF::curvature_directions(n_field_operators(moved, 2)->mesh());
+  const Eigen::VectorXd x2 = ops->from_vectors(x), y2 = ops->from_vectors(y); // powers: signs drop out
+  EXPECT_LT((x2 - y2).norm(), 1e-6 * x2.norm());
+
+  // A sphere is umbilic everywhere: lengths at the level of the discretisation, against 1 above.
+  const auto sphere_ops = n_field_operators(make_icosphere(4), 2);
+  const Eigen::VectorXd s = TVF::curvature_directions(sphere_ops->mesh());
+  EXPECT_LT(s.cwiseAbs().maxCoeff(), 0.02);
+  // A plane: no curvature, no direction.
+  const Eigen::VectorXd p = TVF::curvature_directions(n_field_operators(make_regular_grid(6), 2)->mesh());
+  EXPECT_EQ(p.cwiseAbs().maxCoeff(), 0.);
+}
+
+TEST(CurvatureDirections, AGuideForCrossFieldsOnATorus)
+{
+  // On a torus of revolution the principal directions are the parameter lines; a cross field
+  // aligned to them (smoothest, with the guide) follows them.
+  Mesh torus = make_torus(64, 32, 1.0, 0.4, 0.0);
+  auto guide = torus.add_property_map<Face_index, Vector_3>("f:guide", Vector_3(0, 0, 0)).first;
+  const TVF::Curvature_direction_report report = TVF::curvature_direction_field(torus, guide);
+  EXPECT_EQ(report.unfitted_vertices, 0);
+  auto cross = torus.add_property_map<Face_index, Vector_3>("f:cross", Vector_3(0, 0, 0)).first;
+  TVF::smoothest_n_field(torus, 4, cross, TVF::parameters::alignment_field_map(guide).alignment_weight(10.));
+  double worst = 0;
+  for(Face_index f : torus.faces())
+  {
+    Vector_3 c(0, 0, 0);
+    for(auto v : CGAL::vertices_around_face(torus.halfedge(f), torus)) c = c + (torus.point(v) - CGAL::ORIGIN) / 3;
+    const Vector_3 around = Vector_3(-c.y(), c.x(), 0) / std::sqrt(c.x() * c.x() + c.y() * c.y());
+    const Vector_3 u = cross[f] / std::sqrt(cross[f].squared_length());
+    // The angle of u to the nearest arm of the parameter cross: |sin 2 theta| / 2 ... use the 4-fold angle.
+    const double cos_t = std::max(-1., std::min(1., u * around));
+    const double t = std::acos(std::abs(cos_t));   // in [0, pi/2]
+    worst = std::max(worst, std::min(t, M_PI / 2 - t));
+  }
+  EXPECT_LT(worst, 3 * M_PI / 180);
 }

@@ -51,6 +51,15 @@ std::array<double, 3> to_array(const T& v)
 }
 
 /// The mesh's elements in the order of their indices, and the intrinsic mesh built from them.
+// The graph's ranges, found by argument-dependent lookup when the template is instantiated
+// (so that this header compiles before the mesh's graph traits are included).
+template <class Graph>
+auto graph_vertices(const Graph& g) { return vertices(g); }
+template <class Graph>
+auto graph_edges(const Graph& g) { return edges(g); }
+template <class Graph>
+auto graph_faces(const Graph& g) { return faces(g); }
+
 template <class TriangleMesh>
 class Mesh_adapter
 {
@@ -71,9 +80,9 @@ public:
     auto eim = CGAL::get_initialized_edge_index_map(mesh, np);
     auto fim = CGAL::get_initialized_face_index_map(mesh, np);
 
-    place(vertices_, CGAL::vertices(mesh), vim, "vertex");
-    place(edges_, CGAL::edges(mesh), eim, "edge");
-    place(faces_, CGAL::faces(mesh), fim, "face");
+    place(vertices_, graph_vertices(mesh), vim, "vertex");
+    place(edges_, graph_edges(mesh), eim, "edge");
+    place(faces_, graph_faces(mesh), fim, "face");
 
     std::vector<Intrinsic_mesh::Point> points(vertices_.size());
     for(std::size_t i = 0; i < vertices_.size(); ++i)
