@@ -54,7 +54,7 @@ int pair_up(const Eigen::VectorXd& values, const Eigen::MatrixXd& vectors, const
 namespace {
 
 const char file_magic[8] = {'T', 'V', 'F', 'N', 'F', 'I', 'E', 'L'};
-const std::uint32_t file_version = 1;
+const std::uint32_t file_version = 2; // 2: the prescribed singularities of the connection
 
 double total_area(const Intrinsic_mesh& mesh)
 {
@@ -156,6 +156,14 @@ void N_field_basis::save(const std::string& path) const
   internal::write_basis_header(out, file_magic, file_version, operators_->mesh());
   write_value<std::int32_t>(out, n());
   write_value<std::int32_t>(out, static_cast<std::int32_t>(operators_->options().boundary));
+  // The connection: a basis of another set of prescribed singularities spans other fields.
+  const auto& singularities = operators_->options().singularities;
+  write_value<std::int32_t>(out, static_cast<std::int32_t>(singularities.size()));
+  for(const auto& [v, k] : singularities)
+  {
+    write_value<std::int32_t>(out, v);
+    write_value<std::int32_t>(out, k);
+  }
   write_value<std::int32_t>(out, kernel_dimension_);
   write_matrix(out, values_);
   write_matrix(out, fields_);
@@ -177,6 +185,18 @@ N_field_basis N_field_basis::load(std::shared_ptr<const N_field_operators> opera
   if(n != ops.n()) r.fail("it holds " + std::to_string(n) + "-fields, not " + std::to_string(ops.n()) + "-fields");
   if(r.value<std::int32_t>() != static_cast<std::int32_t>(ops.options().boundary))
     r.fail("it was computed with another boundary condition");
+  const std::int32_t count = r.value<std::int32_t>();
+  if(count < 0 || count > ops.mesh().number_of_vertices()) r.fail("the file is corrupt (singularity count)");
+  std::vector<std::pair<int, int>> singularities(count);
+  for(auto& [v, k] : singularities)
+  {
+    v = r.value<std::int32_t>();
+    k = r.value<std::int32_t>();
+  }
+  if(singularities != ops.options().singularities)
+    r.fail("it was computed for a connection with " + std::to_string(count) +
+           " prescribed singularities, not these " + std::to_string(ops.options().singularities.size()) +
+           " (a basis belongs to one set of prescribed singularities)");
   basis.kernel_dimension_ = r.value<std::int32_t>();
   basis.values_ = r.matrix(-1, 1, "eigenvalues");
   basis.fields_ = r.matrix(ops.masses().size(), basis.values_.size(), "eigenfields");

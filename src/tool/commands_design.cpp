@@ -127,6 +127,7 @@ std::array<double, 3> parse_direction(const std::string& text)
 
 int design_command(const Arguments& args)
 {
+  if(wants_n_field(args) || constraint_file_has_n(args)) return n_field_design_command(args);
   Command_line command(
       "tvf design <mesh> --constraints FILE.json [--basis FILE [-d D]] [--soft] [--omega W] -o FILE",
       "Designs a field from constraints (vectors, directions, divergences, curls; JSON, see doc/manual.md).\n"
@@ -134,7 +135,8 @@ int design_command(const Arguments& args)
       "constraints, exact); with --basis the same spline in the span of a spectral basis (the real-time\n"
       "editor's answer); with --soft the soft-constrained design of Fisher et al. (min E_D + omega E_B +\n"
       "sum w_i |C_i x - c_i|^2, weights from the file), full or reduced.  Prints the constraint residual and\n"
-      "the warnings of the solver.");
+      "the warnings of the solver.  A constraint file with \"n\" designs an n-direction field instead (see\n"
+      "'tvf design --n 4 --help').");
   command.positional("mesh", "the mesh file");
   command.group("design").add_options()
     ("constraints", po::value<std::string>()->value_name("FILE"), "the constraints (JSON)")
@@ -518,10 +520,11 @@ int streamlines_command(const Arguments& args)
 
 int export_command(const Arguments& args)
 {
+  if(wants_n_field(args)) return n_field_export_command(args);
   Command_line command("tvf export <mesh> (--field FILE | --field-ply NAME) -o FILE",
                        "Converts a field between the formats the tool reads and writes: .tvf (text), .ply (the mesh\n"
                        "with face properties), .vtp (ParaView), .rawfield (Directional).  Reading a .rawfield and\n"
-                       "writing a .tvf imports a Directional field.");
+                       "writing a .tvf imports a Directional field.  With --n N: an n-field (see 'tvf export --n 4 --help').");
   command.positional("mesh", "the mesh file");
   add_field_options(command);
   add_output_options(command, "the field", "field");

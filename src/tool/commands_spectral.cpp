@@ -364,11 +364,13 @@ int decompose_command(const Arguments& args)
 
 int basis_command(const Arguments& args)
 {
+  if(wants_n_field(args)) return n_field_basis_command(args);
   Command_line command("tvf basis <mesh> -o FILE.tvfb [-n N | --exact N --coexact N | --max-eigenvalue L]",
                        "Computes the lowest eigenfields of the Hodge-Laplacian (harmonic fields first) by spectrum\n"
                        "slicing, with a proof of completeness (Sylvester inertia), and saves them to a binary .tvfb\n"
                        "file that 'filter', 'compress', 'design --basis' and 'eigenfield' read.  A progress bar is\n"
-                       "drawn on stderr when it is a terminal.");
+                       "drawn on stderr when it is a terminal.  With --n N: the basis of n-direction fields (.tvfn; see\n"
+                       "'tvf basis --n 4 --help').");
   command.positional("mesh", "the mesh file");
   command.group("basis").add_options()
     ("eigenfields,n", po::value<int>()->default_value(100)->value_name("N"), "the N lowest eigenfields")

@@ -34,6 +34,10 @@ const std::vector<Subcommand>& subcommands()
       {"render", "draw a field: colours, streamlines, fur or arrows (PNG or SVG)", render_command},
       {"streamlines", "trace evenly spaced streamlines or fur strokes (OBJ, PLY, VTP)", streamlines_command},
       {"export", "convert a field between .tvf, .ply, .vtp and .rawfield", export_command},
+      {"smoothest", "the smoothest n-direction field (--n 4: cross field), optionally aligned to the curvature",
+       smoothest_command},
+      {"singularities", "the singular vertices of an n-field with their indices (.sing), Poincare-Hopf checked",
+       singularities_command},
       {"serve", "start the interactive field editor (a local web server and page)", serve_command}};
   return list;
 }

@@ -141,6 +141,15 @@ TEST(NFieldBasis, KernelFirstOnTheCubeAndFilesRoundTrip)
   EXPECT_NE(load_error(n_field_operators(cube, 4, TVF::N_field_boundary::zero), path).find("boundary condition"),
             std::string::npos);
   EXPECT_NE(load_error(n_field_operators(make_cube(3), 4), path).find("other connectivity"), std::string::npos);
+  {
+    // Another connection: a prescribed singularity changes S_n, so the basis does not fit.
+    TVF::Discrete_operators<Mesh> ops(cube);
+    TVF::N_field_options prescribed;
+    prescribed.singularities = {{5, 1}};
+    const auto with_singularity = std::make_shared<const TVF::N_field_operators>(ops.shared_matrices(), 4, prescribed);
+    EXPECT_NE(load_error(with_singularity, path).find("0 prescribed singularities, not these 1"), std::string::npos)
+        << load_error(with_singularity, path);
+  }
   Mesh bigger = make_cube(4);
   transform(bigger, 2.0);
   EXPECT_NE(load_error(n_field_operators(bigger, 4), path).find("other edge lengths"), std::string::npos);

@@ -5,6 +5,7 @@
 #   -DEXPECT=success | failure | usage
 #   -DOUTPUTS=<files, separated by |>   success: each must have been written (they are removed first)
 #   -DSTDOUT=<regular expression>       success: the standard output must match it
+#   -DSTDERR=<regular expression>       failure / usage: the reason on stderr must match it
 #
 # success: exit code 0 and nothing on stderr (progress bars are drawn on terminals only).
 # failure / usage: exit code 1 / 2, and stderr is exactly one line "tvf: error: <reason>" --
@@ -52,6 +53,9 @@ else()
   endif()
   if(NOT err MATCHES "^tvf: error: [^\n]+\n$")
     message(FATAL_ERROR "${what}\nexpected one line 'tvf: error: ...' on stderr, got:\n${err}")
+  endif()
+  if(DEFINED STDERR AND NOT STDERR STREQUAL "" AND NOT err MATCHES "${STDERR}")
+    message(FATAL_ERROR "${what}\nthe reason does not match '${STDERR}':\n${err}")
   endif()
   message(STATUS "${what}\n${err}")
 endif()
