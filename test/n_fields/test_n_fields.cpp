@@ -4,11 +4,14 @@
 // n-direction fields (SPEC 10), the field itself: the first-order energy against independent
 // formulas (Crouzeix-Raviart for n = 1, a frame-free hinge computation for any n), its symmetry,
 // kernel and J-invariance, the index and Poincare-Hopf on meshes of every topology, the smoothest
-// field (sphere: 2n singularities of index 1/n; cube: its corners), alignment, invariance.
+// field (sphere: 2n singularities of index 1/n; cube: its corners), alignment, invariance; the
+// files (.rawfield of degree n, .sing, .vtp) written and read back.
 
 #include "n_field_test_support.h"
 
 #include <CGAL/Tangent_vector_fields/N_field_singularities.h>
+#include <CGAL/Tangent_vector_fields/errors.h>
+#include <CGAL/Tangent_vector_fields/n_field_files.h>
 #include <CGAL/Tangent_vector_fields/smoothest_n_field.h>
 
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
@@ -369,3 +372,101 @@ TEST(SmoothestNField, GenericInterfaceOnASurfaceMesh)
   EXPECT_EQ(sum, 8);
 }
 
+
+TEST(NFieldFiles, RawFieldsAndSingularitiesRoundTripAndBadFilesAreRefused)
+{
+  Mesh torus = make_torus(20, 12);
+  for(int n : {2, 4})
+  {
+    const auto ops = n_field_operators(torus, n);
+    const TVF::Intrinsic_mesh& mesh = ops->mesh();
+    const Eigen::VectorXd z = ops->from_vectors(random_vectors(mesh.number_of_faces(), 7 + n));
+    const TVF::Raw_field raw = TVF::n_field_to_raw_field(*ops, z);
+    ASSERT_EQ(raw.degree, n);
+    // The n vectors, counter-clockwise about the face normal, at 2 pi / n of each other.
+    for(int f = 0; f < mesh.number_of_faces(); f += 37)
+      for(int j = 1; j < n; ++j)
+      {
+        const Eigen::Vector3d a = to_eigen(raw.vectors[f * n + j - 1]), b = to_eigen(raw.vectors[f * n + j]);
+        const Eigen::Vector3d normal = to_eigen(mesh.normal(f));
+        EXPECT_LT((b - rotate(a, normal, 2 * M_PI / n)).norm(), 1e-12 * a.norm()) << "face " << f;
+      }
+    // File round trip bit for bit; the n-field read back within rounding.
+    std::stringstream text;
+    TVF::write_raw_field(text, raw);
+    const TVF::Raw_field again = TVF::read_raw_field(text);
+    EXPECT_EQ(again.degree, n);
+    EXPECT_EQ(again.vectors, raw.vectors);
+    EXPECT_LT((TVF::n_field_from_raw_field(*ops, again) - z).cwiseAbs().maxCoeff(), 1e-13);
+
+    const TVF::Singularity_file sing = TVF::n_field_singularity_file(*ops, z);
+    int sum = 0;
+    for(const auto& s : sing.singularities) sum += s.second;
+    EXPECT_EQ(sum, 0); // n chi on the torus
+    EXPECT_GT(sing.singularities.size(), 4u);
+    std::stringstream sing_text;
+    TVF::write_singularity_file(sing_text, sing);
+    const TVF::Singularity_file sing_again = TVF::read_singularity_file(sing_text);
+    EXPECT_EQ(sing_again.n, n);
+    EXPECT_EQ(sing_again.singularities, sing.singularities);
+
+    // The .vtp: n vector arrays, and the index k / n at every vertex.
+    const TVF::Vtk_polydata vtp = TVF::n_field_polydata(*ops, z, "cross");
+    std::stringstream vtp_text;
+    TVF::write_vtk_polydata(vtp_text, vtp);
+    const TVF::Vtk_polydata read = TVF::read_vtk_polydata(vtp_text);
+    const auto* index = read.find_point_array("cross_index");
+    ASSERT_TRUE(index);
+    const std::vector<int> k = TVF::n_field_indices(*ops, z);
+    for(int v = 0; v < mesh.number_of_vertices(); ++v) EXPECT_EQ(index->values[v], double(k[v]) / n);
+    for(int j = 0; j < n; ++j)
+    {
+      const auto* arm = read.find_cell_array("cross_" + std::to_string(j));
+      ASSERT_TRUE(arm);
+      for(int f = 0; f < mesh.number_of_faces(); f += 53)
+        for(int c = 0; c < 3; ++c) EXPECT_EQ(arm->values[3 * f + c], raw.vectors[f * n + j][c]);
+    }
+  }
+
+  const auto ops = n_field_operators(torus, 4);
+  const int nf = ops->mesh().number_of_faces();
+  auto raw_error = [&](const TVF::Raw_field& raw) {
+    try
+    {
+      TVF::n_field_from_raw_field(*ops, raw);
+    }
+    catch(const TVF::Invalid_input& e)
+    {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  TVF::Raw_field lines = TVF::n_field_to_raw_field(*n_field_operators(torus, 2), random_vectors(nf, 3));
+  EXPECT_NE(raw_error(lines).find("2 vectors per face where an n-field with n = 4 has 4"), std::string::npos);
+  TVF::Raw_field crosses = TVF::n_field_to_raw_field(*ops, ops->from_vectors(random_vectors(nf, 4)));
+  std::swap(crosses.vectors[4 * 9 + 1], crosses.vectors[4 * 9 + 3]); // clockwise in face 9
+  EXPECT_NE(raw_error(crosses).find("face 9 is not an n-field with n = 4: vector 1 is 180 degrees"), std::string::npos)
+      << raw_error(crosses);
+  crosses.vectors.pop_back();
+  EXPECT_NE(raw_error(crosses).find("faces, the mesh has"), std::string::npos) << raw_error(crosses);
+
+  auto sing_error = [](const std::string& text) {
+    std::istringstream in(text);
+    try
+    {
+      TVF::read_singularity_file(in);
+    }
+    catch(const TVF::Invalid_input& e)
+    {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_NE(sing_error("").find("no header"), std::string::npos);
+  EXPECT_NE(sing_error("0 1\n3 1\n").find("N must be at least 1"), std::string::npos);
+  EXPECT_NE(sing_error("4 2\n3 1\n").find("2 singularities announced, 1 found"), std::string::npos);
+  EXPECT_NE(sing_error("4 2\n3 1\n3 -1\n").find("vertex 3 listed twice"), std::string::npos);
+  EXPECT_NE(sing_error("4 1\n3 1.5\n").find("'1.5' is not an integer"), std::string::npos);
+  EXPECT_NE(sing_error("4 1\n-3 1\n").find("bad vertex -3"), std::string::npos);
+  EXPECT_NE(sing_error("4 1\n3 1\n7\n").find("unexpected '7'"), std::string::npos);
+}
