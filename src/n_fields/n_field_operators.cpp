@@ -295,6 +295,32 @@ N_field_operators::Vector N_field_operators::laplacian(const Vector& z) const
 
 double N_field_operators::dirichlet_energy(const Vector& z) const { return z.dot(S() * z); }
 
+N_field_operators::Vector N_field_operators::energy_density(const Vector& z) const
+{
+  const Intrinsic_mesh& mesh = this->mesh();
+  if(z.size() != 2 * mesh.number_of_faces())
+    throw Invalid_input("n-field energy density: the field has " + std::to_string(z.size()) + " coordinates, not " +
+                        std::to_string(2 * mesh.number_of_faces()));
+  const Vector& t = connection_angles();
+  const Vector& w = edge_weights();
+  Vector twice_energy = Vector::Zero(mesh.number_of_faces()); // each edge term, half to each face, doubled
+  for(int i = 0; i < t.size(); ++i)
+  {
+    const auto& ff = mesh.edge_faces(mesh.interior_edges()[i]);
+    // |z_f - rho^n z_g|^2 with rho^n z_g = R(n t) z_g, the connection of S_n.
+    const std::complex<double> zf(z[2 * ff[0]], z[2 * ff[0] + 1]), zg(z[2 * ff[1]], z[2 * ff[1] + 1]);
+    const double term = w[i] * std::norm(zf - std::polar(1., n_ * t[i]) * zg);
+    twice_energy[ff[0]] += term;
+    twice_energy[ff[1]] += term;
+  }
+  Vector boundary = Vector::Zero(mesh.number_of_faces());
+  add_boundary_diagonal(boundary); // the zero boundary condition: w_e |z_f|^2
+  Vector density(mesh.number_of_faces());
+  for(int f = 0; f < mesh.number_of_faces(); ++f)
+    density[f] = (twice_energy[f] / 2 + boundary[f] * (z[2 * f] * z[2 * f] + z[2 * f + 1] * z[2 * f + 1])) / mesh.face_area(f);
+  return density;
+}
+
 double N_field_operators::m_harmonic_energy(const Vector& z, int m) const
 {
   if(m < 1) throw Invalid_input("m-harmonic energy: m must be at least 1 (got " + std::to_string(m) + ")");

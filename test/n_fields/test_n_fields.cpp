@@ -470,3 +470,20 @@ TEST(NFieldFiles, RawFieldsAndSingularitiesRoundTripAndBadFilesAreRefused)
   EXPECT_NE(sing_error("4 1\n-3 1\n").find("bad vertex -3"), std::string::npos);
   EXPECT_NE(sing_error("4 1\n3 1\n7\n").find("unexpected '7'"), std::string::npos);
 }
+
+TEST(NFieldOperators, EnergyDensityIntegratesToTheEnergyAndVanishesForParallelFields)
+{
+  const Mesh disk = make_disk(8, 0.3);
+  for(auto boundary : {TVF::N_field_boundary::free, TVF::N_field_boundary::zero})
+  {
+    const auto ops = n_field_operators(disk, 3, boundary);
+    const Eigen::VectorXd z = ops->from_vectors(random_vectors(ops->mesh().number_of_faces(), 17));
+    const Eigen::VectorXd density = ops->energy_density(z);
+    EXPECT_NEAR(density.dot(ops->face_areas()), ops->dirichlet_energy(z), 1e-12 * ops->dirichlet_energy(z));
+    EXPECT_GE(density.minCoeff(), 0.);
+  }
+  // A flat annulus has parallel fields: zero density (free boundary).
+  const auto ops = n_field_operators(disk, 3);
+  ASSERT_EQ(ops->kernel().cols(), 2);
+  EXPECT_LT(ops->energy_density(ops->kernel().col(0)).cwiseAbs().maxCoeff(), 1e-20);
+}

@@ -132,6 +132,10 @@ public:
   Vector laplacian(const Vector& z) const;
   /// `E_D(z) = z^T S_n z`.
   double dirichlet_energy(const Vector& z) const;
+  /// Per face, the first-order energy density: half of the `E_D` term of each of its edges
+  /// (and its boundary terms under the zero condition), divided by its area.
+  /// `sum_f A_f density_f = E_D(z)`; for a unit field, how fast it turns there.
+  Vector energy_density(const Vector& z) const;
   /// m-harmonic energy `z^T S_n (MX^-1 S_n)^(m-1) z` (m = 1: `E_D`, m = 2: `E_B = |L_n z|^2_MX`).
   double m_harmonic_energy(const Vector& z, int m) const;
 
