@@ -60,7 +60,7 @@ Raw_field n_field_to_raw_field(const N_field_operators& ops, const Eigen::Vector
   return raw;
 }
 
-Eigen::VectorXd n_field_from_raw_field(const N_field_operators& ops, const Raw_field& raw, double angle_tolerance)
+Eigen::VectorXd n_field_from_raw_field(const N_field_operators& ops, const Raw_field& raw, double tolerance)
 {
   const Intrinsic_mesh& mesh = ops.mesh();
   const int n = ops.n();
@@ -92,7 +92,7 @@ Eigen::VectorXd n_field_from_raw_field(const N_field_operators& ops, const Raw_f
     {
       // Vector j must be vector 0 turned counter-clockwise by 2 pi j / n, of the same length.
       const std::complex<double> expected = u[0] * std::polar(1., 2 * M_PI * j / n);
-      if(std::abs(u[j] - expected) > angle_tolerance * largest)
+      if(std::abs(u[j] - expected) > tolerance * largest)
       {
         std::ostringstream s;
         s << "raw field: face " << f << " is not an n-field with n = " << n << ": vector " << j << " is "
