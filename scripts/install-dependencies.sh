@@ -8,6 +8,7 @@ packages=(
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev
   libboost-program-options-dev               # the command-line tool tvf
   libeigen3-dev
+  nlohmann-json3-dev                         # JSON: constraint files and the editor's messages
   libsuitesparse-dev libopenblas0-pthread   # CHOLMOD, with OpenBLAS as its BLAS (about 3x faster than the reference BLAS)
   libgtest-dev
   libcairo2-dev pkg-config fonts-dejavu-core # pictures: Field_renderer (PNG, SVG) and its text

@@ -5,100 +5,67 @@
 #include <CGAL/Tangent_vector_fields/errors.h>
 #include <CGAL/Tangent_vector_fields/internal/constraint_json.h>
 
-#include <boost/property_tree/json_parser.hpp>
-
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <iomanip>
 #include <ostream>
 #include <sstream>
+#include <vector>
 
 namespace CGAL {
 namespace Tangent_vector_fields {
 
-namespace internal {
-
-double Json_reader::number(const char* key) const
-{
-  if(!has(key)) fail(std::string("missing \"") + key + "\"");
-  double x = 0;
-  if(!read_json_number(node.get_child(key), x)) fail(std::string("\"") + key + "\" is not a number");
-  if(!std::isfinite(x)) fail(std::string("\"") + key + "\" is not finite");
-  return x;
-}
-
-int Json_reader::index(const char* key) const
-{
-  const double x = number(key);
-  if(x != std::floor(x) || x < 0 || x > 2e9) fail(std::string("\"") + key + "\" is not a valid index");
-  return static_cast<int>(x);
-}
-
-std::array<double, 3> Json_reader::triple(const char* key) const
-{
-  if(!has(key)) fail(std::string("missing \"") + key + "\"");
-  std::array<double, 3> v{{0, 0, 0}};
-  int k = 0;
-  for(const auto& child : node.get_child(key))
-  {
-    if(!child.first.empty() || k == 3 || !read_json_number(child.second, v[k++]))
-      fail(std::string("\"") + key + "\" must be an array of 3 numbers");
-  }
-  if(k != 3) fail(std::string("\"") + key + "\" must be an array of 3 numbers");
-  for(double x : v)
-    if(!std::isfinite(x)) fail(std::string("\"") + key + "\" has a non-finite entry");
-  return v;
-}
-
-std::array<double, 3> Json_reader::point(const Intrinsic_mesh& mesh, int face) const
-{
-  if(face >= mesh.number_of_faces()) fail("face " + std::to_string(face) + " out of range");
-  if(has("point")) return barycentric_coordinates(mesh, face, triple("point"));
-  if(has("barycentric"))
-  {
-    const std::array<double, 3> w = triple("barycentric");
-    const std::array<double, 3> v = triple("vertices");
-    try
-    {
-      return barycentric_in_face_order(mesh, face, {{int(v[0]), int(v[1]), int(v[2])}}, w);
-    }
-    catch(const Invalid_input& e)
-    {
-      fail(e.what());
-    }
-  }
-  fail("a point in a face needs \"point\" or \"vertices\" and \"barycentric\"");
-}
-
-} // namespace internal
 
 namespace {
 
-typedef boost::property_tree::ptree Tree;
 typedef internal::Json_reader Reader;
 
-Field_constraint parse(const Tree& node, const std::string& name, const Intrinsic_mesh& mesh)
+// Each kind's members ("weight" is added when the caller takes weights).
+Field_constraint parse(const Reader& r, const Intrinsic_mesh& mesh, bool weighted)
 {
-  const Reader r{node, name};
-  if(!node.data().empty() || node.empty()) r.fail("not a JSON object");
-  const std::string type = node.get<std::string>("type", "");
-  if(type == "vector") return Field_constraint::vector_in_face(r.index("face"), r.triple("vector"));
-  if(type == "direction") return Field_constraint::direction_in_face(r.index("face"), r.triple("direction"));
+  r.expect_object();
+  const std::string type = r.text("type");
+  auto allow = [&](std::vector<const char*> keys) {
+    keys.push_back("type");
+    if(weighted) keys.push_back("weight");
+    r.allow_only(keys, " for a " + type + " constraint");
+  };
+  if(type == "vector")
+  {
+    allow({"face", "vector"});
+    return Field_constraint::vector_in_face(r.index("face"), r.triple("vector"));
+  }
+  if(type == "direction")
+  {
+    allow({"face", "direction"});
+    return Field_constraint::direction_in_face(r.index("face"), r.triple("direction"));
+  }
   if(type == "divergence")
   {
-    if(r.has("vertex")) return Field_constraint::divergence_at_vertex(r.index("vertex"), r.number("value"));
+    allow({"vertex", "face", "point", "vertices", "barycentric", "value"});
+    if(r.has("vertex"))
+    {
+      if(r.has("face")) r.fail("give \"vertex\" or a point of a \"face\", not both");
+      return Field_constraint::divergence_at_vertex(r.index("vertex"), r.number("value"));
+    }
     const int face = r.index("face");
     return Field_constraint::divergence_at_point(face, r.point(mesh, face), r.number("value"));
   }
   if(type == "curl")
   {
-    if(r.has("edge")) return Field_constraint::curl_at_edge(r.index("edge"), r.number("value"));
+    allow({"edge", "face", "point", "vertices", "barycentric", "value"});
+    if(r.has("edge"))
+    {
+      if(r.has("face")) r.fail("give \"edge\" or a point of a \"face\", not both");
+      return Field_constraint::curl_at_edge(r.index("edge"), r.number("value"));
+    }
     const int face = r.index("face");
     return Field_constraint::curl_at_point(face, r.point(mesh, face), r.number("value"));
   }
   if(type == "boundary_alignment")
   {
+    allow({"edge"});
     try
     {
       return Field_constraint::boundary_alignment(mesh, r.index("edge"));
@@ -115,19 +82,11 @@ Field_constraint parse(const Tree& node, const std::string& name, const Intrinsi
 
 namespace internal {
 
-bool read_json_number(const boost::property_tree::ptree& node, double& x)
+Field_constraint parse_constraint(const Json& node, const std::string& name, const Operator_matrices& operators,
+                                  double* weight)
 {
-  const std::string& text = node.data();
-  if(!node.empty() || text.empty()) return false;
-  char* end = nullptr;
-  x = std::strtod(text.c_str(), &end);
-  return end == text.c_str() + text.size();
-}
-
-Field_constraint parse_constraint(const boost::property_tree::ptree& node, const std::string& name,
-                                  const Operator_matrices& operators, double* weight)
-{
-  Field_constraint c = parse(node, name, operators.mesh());
+  const Reader r{node, name};
+  Field_constraint c = parse(r, operators.mesh(), weight != nullptr);
   // Validates indices and values now, so that errors name the constraint.
   try
   {
@@ -139,37 +98,28 @@ Field_constraint parse_constraint(const boost::property_tree::ptree& node, const
   }
   if(weight)
   {
-    const Reader r{node, name};
     *weight = r.has("weight") ? r.number("weight") : 1.0;
     if(!(*weight > 0)) r.fail("the weight must be positive");
   }
   return c;
 }
 
-Constraint_file parse_constraint_file(const boost::property_tree::ptree& root, const Operator_matrices& operators)
+Constraint_file parse_constraint_file(const Json& root, const Operator_matrices& operators)
 {
+  const Reader file_reader{root, "constraint file"};
+  file_reader.allow_only({"omega", "constraints"});
   Constraint_file file;
-  if(root.count("omega"))
+  if(file_reader.has("omega"))
   {
-    try
-    {
-      file.omega = root.get<double>("omega");
-    }
-    catch(const boost::property_tree::ptree_bad_data&)
-    {
-      throw Invalid_input("constraint file: omega is not a number");
-    }
+    file.omega = file_reader.number("omega");
     file.has_omega = true;
-    if(!std::isfinite(file.omega) || file.omega < 0) throw Invalid_input("constraint file: omega must be >= 0");
+    if(file.omega < 0) file_reader.fail("\"omega\" must be >= 0");
   }
-  if(!root.count("constraints")) throw Invalid_input("constraint file: no \"constraints\" array");
   int position = 0;
-  for(const auto& child : root.get_child("constraints"))
+  for(const Json& entry : file_reader.array("constraints"))
   {
-    if(!child.first.empty()) throw Invalid_input("constraint file: \"constraints\" must be an array");
     double weight = 1;
-    file.constraints.push_back(
-        parse_constraint(child.second, "constraint " + std::to_string(position), operators, &weight));
+    file.constraints.push_back(parse_constraint(entry, "constraint " + std::to_string(position), operators, &weight));
     file.weights.push_back(weight);
     ++position;
   }
@@ -180,16 +130,7 @@ Constraint_file parse_constraint_file(const boost::property_tree::ptree& root, c
 
 Constraint_file read_constraint_file(std::istream& in, const Operator_matrices& operators)
 {
-  Tree root;
-  try
-  {
-    boost::property_tree::read_json(in, root);
-  }
-  catch(const boost::property_tree::json_parser_error& e)
-  {
-    throw Invalid_input("constraint file: " + e.message() + " at line " + std::to_string(e.line()));
-  }
-  return internal::parse_constraint_file(root, operators);
+  return internal::parse_constraint_file(internal::parse_json(in, "constraint file"), operators);
 }
 
 Constraint_file read_constraint_file(const std::string& path, const Operator_matrices& operators)

@@ -5,8 +5,6 @@
 #include <CGAL/Tangent_vector_fields/errors.h>
 #include <CGAL/Tangent_vector_fields/internal/constraint_json.h>
 
-#include <boost/property_tree/json_parser.hpp>
-
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -17,35 +15,28 @@ namespace Tangent_vector_fields {
 
 namespace {
 
-typedef boost::property_tree::ptree Tree;
-
 // A signed integer member (indices k may be negative).
 int signed_integer(const internal::Json_reader& r, const char* key)
 {
-  const double x = r.number(key);
-  if(x != std::floor(x) || std::abs(x) > 1e6) r.fail(std::string("\"") + key + "\" is not an integer");
-  return static_cast<int>(x);
-}
-
-void check_object(const internal::Json_reader& r)
-{
-  if(!r.node.data().empty() || r.node.empty()) r.fail("not a JSON object");
+  return static_cast<int>(r.integer(key, -1000000, 1000000));
 }
 
 N_field_constraint parse(const internal::Json_reader& r, const Intrinsic_mesh& mesh)
 {
-  check_object(r);
-  const std::string type = r.node.get<std::string>("type", "");
+  r.expect_object();
+  const std::string type = r.text("type");
   if(type == "vector" || type == "direction")
   {
+    r.allow_only({"type", "face", type.c_str(), "point", "vertices", "barycentric"}, " for a " + type + " constraint");
     const int face = r.index("face");
     N_field_constraint c = type == "vector" ? N_field_constraint::vector_in_face(face, r.triple("vector"))
                                             : N_field_constraint::direction_in_face(face, r.triple("direction"));
-    if(r.has("point") || r.has("barycentric")) c.barycentric = r.point(mesh, face);
+    if(r.has("point") || r.has("barycentric") || r.has("vertices")) c.barycentric = r.point(mesh, face);
     return c;
   }
   if(type == "singularity")
   {
+    r.allow_only({"type", "vertex", "index", "face", "vector"}, " for a singularity");
     const int vertex = r.index("vertex"), k = signed_integer(r, "index");
     if(r.has("face") || r.has("vector"))
       return N_field_constraint::singularity_at_vertex(vertex, k, r.index("face"), r.triple("vector"));
@@ -58,17 +49,9 @@ N_field_constraint parse(const internal::Json_reader& r, const Intrinsic_mesh& m
 
 N_field_constraint_file read_n_field_constraint_file(std::istream& in, std::shared_ptr<const Operator_matrices> operators)
 {
-  Tree root;
-  try
-  {
-    boost::property_tree::read_json(in, root);
-  }
-  catch(const boost::property_tree::json_parser_error& e)
-  {
-    throw Invalid_input("n-field constraint file: " + e.message() + " at line " + std::to_string(e.line()));
-  }
+  const internal::Json root = internal::parse_json(in, "n-field constraint file");
   const internal::Json_reader file_reader{root, "n-field constraint file"};
-  check_object(file_reader);
+  file_reader.allow_only({"n", "omega", "order", "singularities", "constraints"});
   N_field_constraint_file file;
   file.n = signed_integer(file_reader, "n");
   if(file.n < 1) file_reader.fail("\"n\" must be at least 1");
@@ -82,14 +65,13 @@ N_field_constraint_file read_n_field_constraint_file(std::istream& in, std::shar
     file.order = signed_integer(file_reader, "order");
     if(file.order < 1) file_reader.fail("\"order\" must be at least 1");
   }
-  if(root.count("singularities"))
+  if(file_reader.has("singularities"))
   {
     int position = 0;
-    for(const auto& child : root.get_child("singularities"))
+    for(const internal::Json& entry : file_reader.array("singularities"))
     {
-      const internal::Json_reader r{child.second, "singularity " + std::to_string(position++)};
-      if(!child.first.empty()) file_reader.fail("\"singularities\" must be an array");
-      check_object(r);
+      const internal::Json_reader r{entry, "singularity " + std::to_string(position++)};
+      r.allow_only({"vertex", "index"});
       file.singularities.push_back({r.index("vertex"), signed_integer(r, "index")});
     }
   }
@@ -105,12 +87,10 @@ N_field_constraint_file read_n_field_constraint_file(std::istream& in, std::shar
   {
     file_reader.fail(e.what());
   }
-  if(!root.count("constraints")) file_reader.fail("no \"constraints\" array");
   int position = 0;
-  for(const auto& child : root.get_child("constraints"))
+  for(const internal::Json& entry : file_reader.array("constraints"))
   {
-    const internal::Json_reader r{child.second, "constraint " + std::to_string(position++)};
-    if(!child.first.empty()) file_reader.fail("\"constraints\" must be an array");
+    const internal::Json_reader r{entry, "constraint " + std::to_string(position++)};
     const N_field_constraint c = parse(r, operators->mesh());
     try
     {

@@ -14,10 +14,10 @@
 #include <CGAL/Tangent_vector_fields/Smoothest_n_field_solver.h>
 #include <CGAL/Tangent_vector_fields/curvature_direction_field.h>
 #include <CGAL/Tangent_vector_fields/errors.h>
+#include <CGAL/Tangent_vector_fields/internal/constraint_json.h>
 #include <CGAL/Tangent_vector_fields/n_field_constraint_file_io.h>
 #include <CGAL/Tangent_vector_fields/n_field_files.h>
 
-#include <boost/property_tree/json_parser.hpp>
 
 #include <cerrno>
 #include <cmath>
@@ -225,9 +225,9 @@ bool constraint_file_has_n(const Arguments& args)
     if(path.empty()) continue;
     try
     {
-      boost::property_tree::ptree root;
-      boost::property_tree::read_json(path, root);
-      return root.count("n") > 0;
+      std::ifstream in(path);
+      const TVF::internal::Json root = TVF::internal::parse_json(in, path);
+      return root.is_object() && root.contains("n");
     }
     catch(const std::exception&)
     {

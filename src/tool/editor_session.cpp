@@ -16,8 +16,6 @@
 #include <CGAL/Tangent_vector_fields/errors.h>
 #include <CGAL/Tangent_vector_fields/internal/constraint_json.h>
 
-#include <boost/property_tree/json_parser.hpp>
-#include <boost/property_tree/ptree.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -32,7 +30,7 @@ namespace tvf_tool {
 
 namespace {
 
-typedef boost::property_tree::ptree Tree;
+typedef TVF::internal::Json Json;
 typedef std::chrono::steady_clock Clock;
 
 /// A message the session refuses; its text goes to the page.
@@ -128,45 +126,23 @@ Outgoing binary_message(const std::string& members, const std::vector<Array_out>
 
 // --- JSON in ------------------------------------------------------------------------------------
 
-/// Deepest nesting of objects and arrays in `text` (strings skipped).  Checked before
-/// parsing: the JSON parser recurses, and a megabyte of '[' would overflow the stack.
-int json_depth(const std::string& text)
-{
-  int depth = 0, deepest = 0;
-  bool in_string = false, escaped = false;
-  for(char c : text)
-  {
-    if(in_string)
-    {
-      if(escaped) escaped = false;
-      else if(c == '\\') escaped = true;
-      else if(c == '"') in_string = false;
-    }
-    else if(c == '"') in_string = true;
-    else if(c == '{' || c == '[') deepest = std::max(deepest, ++depth);
-    else if(c == '}' || c == ']') --depth;
-  }
-  return deepest;
-}
-
-const Tree& member(const Tree& tree, const char* key)
+const Json& member(const Json& tree, const char* key)
 {
   const auto it = tree.find(key);
-  if(it == tree.not_found()) throw Message_error(std::string("missing \"") + key + "\"");
-  return it->second;
+  if(it == tree.end()) throw Message_error(std::string("missing \"") + key + "\"");
+  return *it;
 }
 
-double number_value(const Tree& node, const std::string& key)
+double number_member(const Json& tree, const char* key)
 {
-  double x = 0;
-  if(!TVF::internal::read_json_number(node, x)) throw Message_error("\"" + key + "\" must be a number");
-  if(!std::isfinite(x)) throw Message_error("\"" + key + "\" is not finite"); // 1e999 reads as inf
+  const Json& node = member(tree, key);
+  if(!node.is_number()) throw Message_error(std::string("\"") + key + "\" must be a number");
+  const double x = node.get<double>();
+  if(!std::isfinite(x)) throw Message_error(std::string("\"") + key + "\" is not finite");
   return x;
 }
 
-double number_member(const Tree& tree, const char* key) { return number_value(member(tree, key), key); }
-
-long long integer_member(const Tree& tree, const char* key, long long lowest, long long highest)
+long long integer_member(const Json& tree, const char* key, long long lowest, long long highest)
 {
   const double x = number_member(tree, key);
   if(x != std::floor(x) || x < double(lowest) || x > double(highest))
@@ -175,11 +151,11 @@ long long integer_member(const Tree& tree, const char* key, long long lowest, lo
   return static_cast<long long>(x);
 }
 
-std::string text_member(const Tree& tree, const char* key)
+std::string text_member(const Json& tree, const char* key)
 {
-  const Tree& node = member(tree, key);
-  if(!node.empty()) throw Message_error(std::string("\"") + key + "\" must be a string");
-  return node.data();
+  const Json& node = member(tree, key);
+  if(!node.is_string()) throw Message_error(std::string("\"") + key + "\" must be a string");
+  return node.get<std::string>();
 }
 
 // The values of a constraint the field is affine in, with the constraint's kind and place
@@ -305,7 +281,7 @@ const Outgoing& Editor_model::mesh_message() const
 
 struct Editor_session::Request
 {
-  Tree tree;
+  Json tree;
   std::string type;
   bool has_id = false;
   long long id = 0;
@@ -362,20 +338,10 @@ void Editor_session::handle_text(const std::string& text, const Send& send)
   try
   {
     if(text.size() > model_->limits().max_message_bytes) return refuse_oversized(text.size(), send);
-    if(json_depth(text) > model_->limits().max_json_depth)
-      throw Message_error("JSON nested deeper than " + std::to_string(model_->limits().max_json_depth) + " levels");
-    std::istringstream in(text);
-    try
-    {
-      boost::property_tree::read_json(in, request.tree);
-    }
-    catch(const boost::property_tree::json_parser_error& e)
-    {
-      throw Message_error("not JSON: " + e.message() + " at line " + std::to_string(e.line()));
-    }
-    if(request.tree.empty() || !request.tree.data().empty() || request.tree.front().first.empty())
-      throw Message_error("a message must be a JSON object");
-    if(request.tree.count("request"))
+    // Strict: syntax, duplicate keys and deep nesting are refused while parsing.
+    request.tree = TVF::internal::parse_json(text, "not JSON", model_->limits().max_json_depth);
+    if(!request.tree.is_object()) throw Message_error("a message must be a JSON object");
+    if(request.tree.contains("request"))
     {
       request.id = integer_member(request.tree, "request", 0, (1LL << 53));
       request.has_id = true;
@@ -395,10 +361,6 @@ void Editor_session::handle_text(const std::string& text, const Send& send)
   {
     request.text("\"type\":\"error\",\"message\":\"out of memory\"");
   }
-  catch(const boost::property_tree::ptree_error& e)
-  {
-    request.text("\"type\":\"error\",\"message\":" + quote(std::string("malformed message: ") + e.what()));
-  }
 }
 
 void Editor_session::dispatch(Request& r)
@@ -415,6 +377,19 @@ void Editor_session::dispatch(Request& r)
       {"set_basis_size", &Editor_session::set_basis_size},
       {"set_solver", &Editor_session::set_solver},
       {"set_display", &Editor_session::set_display}};
+  // The members each message may have besides "type" and "request": a misspelt one is refused.
+  static const std::map<std::string, std::vector<const char*>> members = {
+      {"hello", {}}, {"add", {"constraint"}}, {"change", {"id", "constraint"}}, {"remove", {"id"}}, {"clear", {}},
+      {"load", {"file"}}, {"save", {}}, {"set_omega", {"omega"}}, {"set_basis_size", {"size"}},
+      {"set_solver", {"solver"}}, {"set_display", {"lines", "strokes", "length", "separation", "scalar"}}, {"ping", {}}};
+  const auto allowed = members.find(r.type);
+  if(allowed != members.end())
+  {
+    std::vector<const char*> keys = allowed->second;
+    keys.push_back("type");
+    keys.push_back("request");
+    TVF::internal::Json_reader{r.tree, r.type}.allow_only(keys);
+  }
   if(r.type == "ping") return r.text("\"type\":\"pong\"");
   const auto it = handlers.find(r.type);
   if(it == handlers.end())
@@ -768,26 +743,26 @@ void Editor_session::set_display(Request& r)
 {
   require_ready(r);
   Display display = display_;
-  const Tree& t = r.tree;
-  if(t.count("lines"))
+  const Json& t = r.tree;
+  if(t.contains("lines"))
   {
     display.lines = text_member(t, "lines");
     if(display.lines != "fur" && display.lines != "streamlines" && display.lines != "none")
       throw Message_error("\"lines\" must be \"fur\", \"streamlines\" or \"none\"");
   }
-  if(t.count("scalar"))
+  if(t.contains("scalar"))
   {
     display.scalar = text_member(t, "scalar");
     if(display.scalar != "divergence" && display.scalar != "curl" && display.scalar != "none")
       throw Message_error("\"scalar\" must be \"divergence\", \"curl\" or \"none\"");
   }
-  if(t.count("strokes")) display.strokes = static_cast<int>(integer_member(t, "strokes", 1, model_->limits().max_strokes));
-  if(t.count("length"))
+  if(t.contains("strokes")) display.strokes = static_cast<int>(integer_member(t, "strokes", 1, model_->limits().max_strokes));
+  if(t.contains("length"))
   {
     display.length = number_member(t, "length");
     if(!(display.length > 0 && display.length <= 0.5)) throw Message_error("\"length\" must lie in (0, 0.5]");
   }
-  if(t.count("separation"))
+  if(t.contains("separation"))
   {
     display.separation = number_member(t, "separation");
     if(!(display.separation >= 0.002 && display.separation <= 0.5))

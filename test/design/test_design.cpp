@@ -665,10 +665,18 @@ TEST(DesignInterface, ConstraintFileRoundTripAndErrors)
       {"{\"constraints\": [{\"type\": \"vector\", \"face\": 100000, \"vector\": [1, 0, 0]}]}", "out of range"},
       {"{\"constraints\": [{\"type\": \"vector\", \"face\": 2}]}", "missing \"vector\""},
       {"{\"constraints\": [{\"type\": \"vector\", \"face\": 2, \"vector\": [1, 0]}]}", "3 numbers"},
-      {"{\"constraints\": [{\"type\": \"divergence\", \"vertex\": 2, \"value\": \"x\"}]}", "not a number"},
+      {"{\"constraints\": [{\"type\": \"divergence\", \"vertex\": 2, \"value\": \"x\"}]}", "\"value\" must be a number"},
+      {"{\"constraints\": [{\"type\": \"divergence\", \"vertex\": 2, \"value\": 1e999}]}", "number overflow"},
+      {"{\"constraints\": [{\"type\": \"vector\", \"face\": 2, \"vector\": [1, 0, 0], \"weigth\": 2}]}",
+       "unknown key \"weigth\" for a vector constraint"},
+      {"{\"constraints\": [{\"type\": \"vector\", \"face\": 2, \"face\": 3, \"vector\": [1, 0, 0]}]}",
+       "the key \"face\" appears twice"},
+      {"{\"constraints\": [{\"type\": \"divergence\", \"vertex\": 2, \"face\": 3, \"value\": 1}]}", "not both"},
+      {"{\"omega\": 0}", "missing \"constraints\""},
+      {"{\"constraints\": {}}", "\"constraints\" must be an array"},
       {"{\"constraints\": [{\"type\": \"curl\", \"face\": 2, \"value\": 1}]}", "point"},
       {"{\"omega\": -1, \"constraints\": []}", "omega"},
-      {"{\"items\": []}", "no \"constraints\""}};
+      {"{\"items\": []}", "unknown key \"items\""}};
   for(const auto& b : bad)
   {
     std::istringstream s(b.first);

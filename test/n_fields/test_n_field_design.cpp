@@ -526,6 +526,13 @@ TEST(NFieldConstraintFile, RoundTripAndRefusalsWithTheirReason)
                                    std::to_string(interior) + R"(, "index": 9}]})";
   EXPECT_TRUE(contains(reason(ring_too_far), "constraint 0")) << reason(ring_too_far);
   EXPECT_TRUE(contains(reason("{\"n\": 4,\n \"constraints\": [,]}"), "line 2"));
+  // Misspelt and repeated keys are refused, naming the key.
+  EXPECT_TRUE(contains(reason(R"({"n": 4, "ordre": 1, "constraints": []})"), "unknown key \"ordre\""));
+  EXPECT_TRUE(contains(reason(R"({"n": 4, "n": 2, "constraints": []})"), "the key \"n\" appears twice"));
+  EXPECT_TRUE(contains(reason(R"({"n": 4, "constraints": [{"type": "vector", "face": 1, "vector": [1, 0, 0], "wieght": 1}]})"),
+                       "unknown key \"wieght\" for a vector constraint"));
+  EXPECT_TRUE(contains(reason(R"({"n": 4, "singularities": [{"vertex": 3, "idx": 1}], "constraints": []})"),
+                       "singularity 0: unknown key \"idx\""));
 }
 
 TEST(NFieldSpline, OneRingSingularityInAReducedBasis)
