@@ -1,0 +1,114 @@
+// Copyright (c) 2026 The Tangent_vector_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#include "editor_messages.h"
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+
+namespace tvf_tool {
+
+double milliseconds_since(Clock::time_point start)
+{
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// --- JSON out -----------------------------------------------------------------------------------
+
+std::string quote(const std::string& text)
+{
+  std::string q = "\"";
+  for(unsigned char c : text)
+  {
+    if(c == '"' || c == '\\') q += '\\', q += char(c);
+    else if(c == '\n') q += "\\n";
+    else if(c < 0x20)
+    {
+      char buffer[8];
+      std::snprintf(buffer, sizeof buffer, "\\u%04x", c);
+      q += buffer;
+    }
+    else q += char(c);
+  }
+  return q + "\"";
+}
+
+std::string number(double x)
+{
+  if(!std::isfinite(x)) return "null";
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.17g", x);
+  return buffer;
+}
+
+std::string short_number(double x) // timings and sizes: 6 digits are plenty
+{
+  if(!std::isfinite(x)) return "null";
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.6g", x);
+  return buffer;
+}
+
+// --- binary messages ----------------------------------------------------------------------------
+
+/// `uint32 n`, `n` bytes of JSON header, zero padding to 4 bytes, then the arrays.
+Outgoing binary_message(const std::string& members, const std::vector<Array_out>& arrays)
+{
+  std::string header = "{" + members + ",\"arrays\":[";
+  for(std::size_t i = 0; i < arrays.size(); ++i)
+    header += (i ? "," : "") + std::string("{\"name\":") + quote(arrays[i].name) + ",\"type\":\"" +
+              (arrays[i].is_float ? "float32" : "uint32") + "\",\"length\":" + std::to_string(arrays[i].length) + "}";
+  header += "]}";
+  Outgoing out;
+  out.binary = true;
+  const std::size_t padded = (4 + header.size() + 3) / 4 * 4;
+  std::size_t size = padded;
+  for(const Array_out& a : arrays) size += 4 * a.length;
+  out.data.reserve(size);
+  const std::uint32_t n = static_cast<std::uint32_t>(header.size());
+  const unsigned char length_bytes[4] = {static_cast<unsigned char>(n), static_cast<unsigned char>(n >> 8),
+                                         static_cast<unsigned char>(n >> 16), static_cast<unsigned char>(n >> 24)};
+  out.data.append(reinterpret_cast<const char*>(length_bytes), 4);
+  out.data += header;
+  out.data.append(padded - out.data.size(), '\0');
+  static_assert(sizeof(float) == 4, "float32 arrays");
+  for(const Array_out& a : arrays) out.data.append(static_cast<const char*>(a.data), 4 * a.length); // x86: little-endian
+  return out;
+}
+
+// --- JSON in ------------------------------------------------------------------------------------
+
+const Json& member(const Json& tree, const char* key)
+{
+  const auto it = tree.find(key);
+  if(it == tree.end()) throw Message_error(std::string("missing \"") + key + "\"");
+  return *it;
+}
+
+double number_member(const Json& tree, const char* key)
+{
+  const Json& node = member(tree, key);
+  if(!node.is_number()) throw Message_error(std::string("\"") + key + "\" must be a number");
+  const double x = node.get<double>();
+  if(!std::isfinite(x)) throw Message_error(std::string("\"") + key + "\" is not finite");
+  return x;
+}
+
+long long integer_member(const Json& tree, const char* key, long long lowest, long long highest)
+{
+  const double x = number_member(tree, key);
+  if(x != std::floor(x) || x < double(lowest) || x > double(highest))
+    throw Message_error(std::string("\"") + key + "\" must be an integer in [" + std::to_string(lowest) + ", " +
+                        std::to_string(highest) + "]");
+  return static_cast<long long>(x);
+}
+
+std::string text_member(const Json& tree, const char* key)
+{
+  const Json& node = member(tree, key);
+  if(!node.is_string()) throw Message_error(std::string("\"") + key + "\" must be a string");
+  return node.get<std::string>();
+}
+
+} // namespace tvf_tool
