@@ -48,6 +48,22 @@ void expect_valid_decomposition(const TVF::Hodge_solver& solver, const Eigen::Ve
   const auto& im = A.mesh();
   for(int e = 0; e < im.number_of_edges(); ++e)
     if(!im.is_boundary_edge(e)) EXPECT_LT(std::abs(curl[e]), 1e-9 * scale);
+  // Each part is what it claims, through the operators (the sum above holds by construction:
+  // one part is the remainder): the exact part has no curl, the coexact part no divergence...
+  const Eigen::VectorXd exact_curl = A.nonconforming_curl(p.exact);
+  for(int e = 0; e < im.number_of_edges(); ++e)
+    if(!im.is_boundary_edge(e)) EXPECT_LT(std::abs(exact_curl[e]), 1e-9 * scale);
+  EXPECT_LT(A.divergence(p.coexact).cwiseAbs().maxCoeff(), 1e-9 * scale);
+  // ... and the harmonic part lies in the span of the harmonic basis.
+  const Eigen::MatrixXd& H = solver.harmonic_basis();
+  if(H.cols() == 0)
+    EXPECT_LT(mx_norm(A, p.harmonic), 1e-12 * n);
+  else
+  {
+    const Eigen::MatrixXd MH = A.field_masses().asDiagonal() * H;
+    const Eigen::VectorXd c = (H.transpose() * MH).ldlt().solve(MH.transpose() * p.harmonic);
+    EXPECT_LT(mx_norm(A, H * c - p.harmonic), 1e-9 * n);
+  }
 }
 
 struct Case
