@@ -75,17 +75,53 @@ std::vector<TVF::Field_constraint> mixed_constraints(const TVF::Intrinsic_mesh& 
   return c;
 }
 
-// |C~ x - c| over all rows, relative to max |c|.
+// How far x is from each constraint, measured through the operators (not the solvers'
+// constraint rows): the face's vector, its cross product with a direction, the divergence
+// at vertices and the curl at edges (interpolated at points: barycentric weights for the
+// divergence, Crouzeix-Raviart weights 1 - 2 b_k for the curl at the edge opposite corner k).
+// Relative to the largest value asked for (1 for directions).
 double constraint_residual(const TVF::Operator_matrices& ops, const std::vector<TVF::Field_constraint>& constraints,
                            const Eigen::VectorXd& x)
 {
-  double worst = 0, largest = 0;
+  const TVF::Intrinsic_mesh& m = ops.mesh();
+  const Eigen::VectorXd divergence = ops.divergence(x), curl = ops.nonconforming_curl(x);
+  double worst = 0, largest = 1e-300;
   for(const auto& c : constraints)
-    for(const auto& row : TVF::constraint_rows(ops, c))
+  {
+    switch(c.kind)
     {
-      worst = std::max(worst, std::abs(row.dot(x) - row.value));
-      largest = std::max(largest, std::abs(row.value));
+    case TVF::Constraint_kind::vector:
+    {
+      const auto a = m.to_frame(c.face, c.vector);
+      worst = std::max({worst, std::abs(x[2 * c.face] - a[0]), std::abs(x[2 * c.face + 1] - a[1])});
+      largest = std::max({largest, std::abs(a[0]), std::abs(a[1])});
+      break;
     }
+    case TVF::Constraint_kind::direction:
+    {
+      const auto a = m.to_frame(c.face, c.vector);
+      const double cross = (x[2 * c.face] * a[1] - x[2 * c.face + 1] * a[0]) / std::hypot(a[0], a[1]);
+      worst = std::max(worst, std::abs(cross));
+      largest = std::max(largest, 1.);
+      break;
+    }
+    case TVF::Constraint_kind::divergence:
+    case TVF::Constraint_kind::curl:
+    {
+      const bool div = c.kind == TVF::Constraint_kind::divergence;
+      double measured = 0;
+      if(c.vertex >= 0) measured = divergence[c.vertex];
+      else if(c.edge >= 0) measured = curl[c.edge];
+      else
+        for(int k = 0; k < 3; ++k)
+          measured += div ? c.barycentric[k] * divergence[m.face_vertices(c.face)[k]]
+                          : (1 - 2 * c.barycentric[k]) * curl[m.face_edges(c.face)[k]];
+      worst = std::max(worst, std::abs(measured - c.value));
+      largest = std::max(largest, std::abs(c.value));
+      break;
+    }
+    }
+  }
   return worst / largest;
 }
 
