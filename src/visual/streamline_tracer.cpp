@@ -6,6 +6,7 @@
 
 #include "streamline_walker.h"
 
+#include <CGAL/Tangent_vector_fields/N_field_singularities.h>
 #include <CGAL/Tangent_vector_fields/Streamline_tracer.h>
 #include <CGAL/Tangent_vector_fields/errors.h>
 
@@ -35,6 +36,7 @@ const char* to_string(Streamline_stop stop)
   case Streamline_stop::closed_loop: return "closed_loop";
   case Streamline_stop::too_close: return "too_close";
   case Streamline_stop::stalled: return "stalled";
+  case Streamline_stop::singular_vertex: return "singular_vertex";
   }
   return "unknown";
 }
@@ -86,10 +88,39 @@ std::vector<Streamline> fur_strokes(const internal::Streamline_walker& walker, c
 struct Streamline_tracer::Impl : internal::Streamline_walker
 {
   using internal::Streamline_walker::Streamline_walker;
+  explicit Impl(internal::Streamline_walker&& walker) : internal::Streamline_walker(std::move(walker)) {}
 };
 
-Streamline_tracer::Streamline_tracer(std::shared_ptr<const Intrinsic_mesh> mesh, const Eigen::VectorXd& field)
-  : impl_(std::make_unique<Impl>(std::move(mesh), field))
+Streamline_tracer::Streamline_tracer(std::shared_ptr<const Intrinsic_mesh> mesh, const Eigen::VectorXd& field, int n,
+                                     const std::vector<int>& singular_vertices)
+  : impl_(std::make_unique<Impl>(std::move(mesh), field, n, singular_vertices))
+{}
+
+namespace {
+
+// The walker of an n-field in the power representation: its first vectors and the
+// interior vertices of non-zero index.
+std::unique_ptr<internal::Streamline_walker> n_field_walker(const N_field_operators& operators,
+                                                            const Eigen::VectorXd& z)
+{
+  const Intrinsic_mesh& M = operators.mesh();
+  if(z.size() != 2 * static_cast<Eigen::Index>(M.number_of_faces()))
+    throw Invalid_input("n-field streamlines: the field has " + std::to_string(z.size()) +
+                        " entries, the mesh needs " + std::to_string(2 * M.number_of_faces()));
+  if(!z.allFinite()) throw Invalid_input("n-field streamlines: the field has non-finite entries");
+  std::vector<int> singular;
+  for(const N_field_singularity& s : n_field_singularities(operators, z))
+    if(!s.on_boundary) singular.push_back(s.vertex);
+  // For n = 1 the power representation is the vector itself (to_vectors would round it).
+  return std::make_unique<internal::Streamline_walker>(operators.operators().shared_mesh(),
+                                                       operators.n() == 1 ? z : operators.to_vectors(z),
+                                                       operators.n(), singular);
+}
+
+} // namespace
+
+Streamline_tracer::Streamline_tracer(const N_field_operators& operators, const Eigen::VectorXd& z)
+  : impl_(std::make_unique<Impl>(std::move(*n_field_walker(operators, z))))
 {}
 
 Streamline_tracer::~Streamline_tracer() = default;
@@ -97,6 +128,8 @@ Streamline_tracer::Streamline_tracer(Streamline_tracer&&) noexcept = default;
 Streamline_tracer& Streamline_tracer::operator=(Streamline_tracer&&) noexcept = default;
 
 const Intrinsic_mesh& Streamline_tracer::mesh() const { return *impl_->mesh; }
+int Streamline_tracer::n() const { return impl_->n; }
+const std::vector<int>& Streamline_tracer::singular_vertices() const { return impl_->singular_list; }
 double Streamline_tracer::bounding_box_diagonal() const { return impl_->diagonal; }
 double Streamline_tracer::to_absolute(double value, Length_unit unit) const { return impl_->to_absolute(value, unit); }
 double Streamline_tracer::maximum_magnitude() const { return impl_->maximum_magnitude; }
@@ -108,7 +141,10 @@ Streamline Streamline_tracer::trace(int face, const std::array<double, 3>& baryc
     throw Invalid_input("streamline: face " + std::to_string(face) + " does not exist");
   for(double b : barycentric)
     if(!std::isfinite(b)) throw Invalid_input("streamline: non-finite barycentric coordinates");
-  const Position start = impl_->start_position(face, barycentric);
+  if(options.branch < 0 || options.branch >= impl_->n)
+    throw Invalid_input("streamline: branch " + std::to_string(options.branch) + " asked of a field of " +
+                        std::to_string(impl_->n) + " vector(s) per face");
+  const Position start = impl_->start_position(face, barycentric, options.branch);
   No_proximity* none = nullptr;
   return impl_->trace(start, options, options.loop_closure_tolerance * impl_->mesh->mean_edge_length(), none,
                       none, false, nullptr);

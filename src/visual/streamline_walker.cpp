@@ -15,15 +15,19 @@ namespace CGAL {
 namespace Tangent_vector_fields {
 namespace internal {
 
-Streamline_walker::Streamline_walker(std::shared_ptr<const Intrinsic_mesh> m, const Eigen::VectorXd& field)
-  : mesh(std::move(m))
+Streamline_walker::Streamline_walker(std::shared_ptr<const Intrinsic_mesh> m, const Eigen::VectorXd& field,
+                                     int n_vectors, const std::vector<int>& singular_vertices)
+  : mesh(std::move(m)), n(n_vectors)
 {
   const Intrinsic_mesh& M = *mesh;
   const int nf = M.number_of_faces();
+  if(n < 1) throw Invalid_input("streamlines: n must be at least 1 (got " + std::to_string(n) + ")");
   if(field.size() != 2 * static_cast<Eigen::Index>(nf))
     throw Invalid_input("streamlines: the field has " + std::to_string(field.size()) +
                         " frame coordinates, the mesh needs " + std::to_string(2 * nf));
   if(!field.allFinite()) throw Invalid_input("streamlines: the field has non-finite entries");
+  turn.resize(n);
+  for(int j = 0; j < n; ++j) turn[j] = {std::cos(2 * M_PI * j / n), std::sin(2 * M_PI * j / n)};
   faces.resize(nf);
   for(int f = 0; f < nf; ++f)
   {
@@ -52,6 +56,17 @@ Streamline_walker::Streamline_walker(std::shared_ptr<const Intrinsic_mesh> m, co
   std::vector<int> fill(vertex_face_start.begin(), vertex_face_start.end() - 1);
   for(int f = 0; f < nf; ++f)
     for(int v : M.face_vertices(f)) vertex_faces[fill[v]++] = f;
+
+  singular_vertex.assign(nv, 0);
+  for(int v : singular_vertices)
+  {
+    if(v < 0 || v >= nv)
+      throw Invalid_input("streamlines: singular vertex " + std::to_string(v) + " does not exist (the mesh has " +
+                          std::to_string(nv) + " vertices)");
+    if(!singular_vertex[v]) singular_list.push_back(v);
+    singular_vertex[v] = 1;
+  }
+  std::sort(singular_list.begin(), singular_list.end());
 
   boundary_vertex.assign(nv, 0);
   for(int e = 0; e < M.number_of_edges(); ++e)
@@ -83,16 +98,34 @@ double Streamline_walker::to_absolute(double value, Length_unit unit) const
   return value;
 }
 
-int Streamline_walker::face_leaving_vertex(int v, int exclude, const V3& incoming, const Walk_settings& s) const
+V2 Streamline_walker::carried_across(int f, int g, int e, const V2& v) const
 {
-  int best = -1;
+  const auto& ev = mesh->edge_vertices(e);
+  const Face_data& F = faces[f];
+  const Face_data& G = faces[g];
+  const V2& fa = F.corner[local_corner(f, ev[0])];
+  const V2& fb = F.corner[local_corner(f, ev[1])];
+  const V2& ga = G.corner[local_corner(g, ev[0])];
+  const V2& gb = G.corner[local_corner(g, ev[1])];
+  const V2 edge_f = {fb[0] - fa[0], fb[1] - fa[1]};
+  const V2 edge_g = {gb[0] - ga[0], gb[1] - ga[1]};
+  // In complex numbers: edge_g * conj(edge_f) * v.
+  const double c = dot2(edge_f, v), s = cross2(edge_f, v);
+  return {edge_g[0] * c - edge_g[1] * s, edge_g[1] * c + edge_g[0] * s};
+}
+
+std::pair<int, int> Streamline_walker::face_leaving_vertex(int v, int exclude, const V3& incoming,
+                                                           const V3& reference, const Walk_settings& s) const
+{
+  int best = -1, best_branch = 0;
   double best_alignment = -infinity;
   for(int i = vertex_face_start[v]; i < vertex_face_start[v + 1]; ++i)
   {
     const int g = vertex_faces[i];
     if(g == exclude || !(faces[g].magnitude > s.zero_threshold)) continue;
     const int m = local_corner(g, v);
-    const V2 d = direction(g, s);
+    const int branch = n == 1 ? 0 : matching_branch(g, mesh->to_frame(g, reference));
+    const V2 d = direction(g, branch, s);
     const Face_data& G = faces[g];
     if(!(dot2(G.gradient[(m + 1) % 3], d) > 0 && dot2(G.gradient[(m + 2) % 3], d) > 0)) continue;
     const V3 w = mesh->from_frame(g, d[0], d[1]);
@@ -101,12 +134,11 @@ int Streamline_walker::face_leaving_vertex(int v, int exclude, const V3& incomin
     {
       best_alignment = alignment;
       best = g;
+      best_branch = branch;
     }
   }
-  return best;
+  return {best, best_branch};
 }
-
-// Why a walk that cannot leave vertex `v` stops: all faces there have no field, or
 
 Streamline_stop Streamline_walker::stop_at_vertex(int v, const Walk_settings& s) const
 {
@@ -137,21 +169,38 @@ Walk Streamline_walker::walk(Position pos, const Walk_settings& s, Proximity& pr
   good.position = pos;
   const double tiny = 1e-12 * mesh->mean_edge_length();
   int tiny_run = 0;
+  int last_branch = pos.branch; // the branch of the last segment
   bool left_seed_face = false;
 
-  // A walk starting on a vertex first picks its face.
+  // A walk starting on a vertex first picks its face: the one its face's branch leads
+  // into best (the face itself if it can).
   if(pos.corner >= 0)
   {
     const int v = mesh->face_vertices(pos.face)[pos.corner];
-    const int g = face_leaving_vertex(v, -1, V3{{0, 0, 0}}, s);
-    if(g < 0)
+    if(singular_vertex[v])
+    {
+      w.stop = Streamline_stop::singular_vertex;
+      w.end = pos;
+      return w;
+    }
+    V3 incoming{{0, 0, 0}}, reference{{0, 0, 0}};
+    if(faces[pos.face].magnitude > s.zero_threshold)
+    {
+      const V2 d = direction(pos.face, pos.branch, s);
+      const V2 u = field_vector(pos.face, pos.branch);
+      incoming = mesh->from_frame(pos.face, d[0], d[1]);
+      reference = mesh->from_frame(pos.face, u[0], u[1]);
+    }
+    const std::pair<int, int> g = face_leaving_vertex(v, -1, incoming, reference, s);
+    if(g.first < 0)
     {
       w.stop = stop_at_vertex(v, s);
       w.end = pos;
       return w;
     }
-    pos.face = g;
-    place_on_corner(pos, local_corner(g, v));
+    pos.face = g.first;
+    pos.branch = g.second;
+    place_on_corner(pos, local_corner(g.first, v));
   }
 
   for(int iteration = 0;; ++iteration)
@@ -168,7 +217,7 @@ Walk Streamline_walker::walk(Position pos, const Walk_settings& s, Proximity& pr
       w.stop = Streamline_stop::zero_field;
       break;
     }
-    const V2 d = direction(f, s);
+    const V2 d = direction(f, pos.branch, s);
     const std::array<double, 3> rate = {dot2(F.gradient[0], d), dot2(F.gradient[1], d), dot2(F.gradient[2], d)};
     if(pos.entered_edge >= 0 && !(rate[pos.entered_edge] > 0))
     {
@@ -200,7 +249,7 @@ Walk Streamline_walker::walk(Position pos, const Walk_settings& s, Proximity& pr
       t = std::max(0., s.maximum_length - w.length);
       stop = Streamline_stop::maximum_length;
     }
-    if(s.check_closure && f == s.seed_face && left_seed_face)
+    if(s.check_closure && f == s.seed_face && left_seed_face && same_line(pos.branch, s.seed_branch))
     {
       const V2 p0 = layout_of(f, pos.beta);
       const V2 q = {s.seed_layout[0] - p0[0], s.seed_layout[1] - p0[1]};
@@ -226,6 +275,7 @@ Walk Streamline_walker::walk(Position pos, const Walk_settings& s, Proximity& pr
       }
       good.points = w.points.size();
       good.position.face = f;
+      good.position.branch = pos.branch;
       good.position.beta = b;
       good.position.point = p;
       good.position.entered_edge = good.position.corner = -1;
@@ -277,8 +327,9 @@ Walk Streamline_walker::walk(Position pos, const Walk_settings& s, Proximity& pr
     {
       w.points.push_back(next.point);
       w.faces.push_back(f);
-      if(s.keep_segments) w.segments.push_back({f, pos.beta, next.beta, t});
+      if(s.keep_segments) w.segments.push_back({f, pos.branch, pos.beta, next.beta, t});
       w.length += t;
+      last_branch = pos.branch;
     }
     tiny_run = t < tiny ? tiny_run + 1 : 0;
     pos = next;
@@ -295,16 +346,25 @@ Walk Streamline_walker::walk(Position pos, const Walk_settings& s, Proximity& pr
 
     if(pos.corner >= 0)
     {
-      // On a vertex: continue in a face the field leaves the vertex into.
+      // On a vertex: stop at a singularity, else continue in a face the field leaves the
+      // vertex into.
       const int v = mesh->face_vertices(f)[pos.corner];
-      const int g = face_leaving_vertex(v, f, mesh->from_frame(f, d[0], d[1]), s);
-      if(g < 0)
+      if(singular_vertex[v])
+      {
+        w.stop = Streamline_stop::singular_vertex;
+        break;
+      }
+      const V2 u = field_vector(f, pos.branch);
+      const std::pair<int, int> g =
+          face_leaving_vertex(v, f, mesh->from_frame(f, d[0], d[1]), mesh->from_frame(f, u[0], u[1]), s);
+      if(g.first < 0)
       {
         w.stop = stop_at_vertex(v, s);
         break;
       }
-      pos.face = g;
-      place_on_corner(pos, local_corner(g, v));
+      pos.face = g.first;
+      pos.branch = g.second;
+      place_on_corner(pos, local_corner(g.first, v));
     }
     else
     {
@@ -320,6 +380,8 @@ Walk Streamline_walker::walk(Position pos, const Walk_settings& s, Proximity& pr
       const auto& ev = mesh->edge_vertices(e);
       int j = 0;
       while(mesh->face_edges(g)[j] != e) ++j;
+      // The branch beyond the edge: the vector of g closest to the one followed in f.
+      if(n > 1) pos.branch = matching_branch(g, carried_across(f, g, e, field_vector(f, pos.branch)));
       pos.face = g;
       pos.beta = {0, 0, 0};
       pos.beta[local_corner(g, ev[0])] = 1 - edge_parameter;
@@ -328,6 +390,9 @@ Walk Streamline_walker::walk(Position pos, const Walk_settings& s, Proximity& pr
     }
     if(pos.face != s.seed_face) left_seed_face = true;
   }
+  if(w.stop == Streamline_stop::sink_edge || w.stop == Streamline_stop::sink_vertex ||
+     w.stop == Streamline_stop::stalled)
+    end_at_singular_vertex(w, pos, last_branch, s.keep_segments);
   w.end = pos;
   // A walk that came too close to another streamline is cut back to its last good
   // sample; so is one that stopped for another reason (a sink, the boundary) but
@@ -344,7 +409,8 @@ Walk Streamline_walker::walk(Position pos, const Walk_settings& s, Proximity& pr
       w.points.push_back(good.position.point);
       w.faces.push_back(good.position.face);
       if(s.keep_segments)
-        w.segments.push_back({good.position.face, good.segment_start, good.position.beta, partial});
+        w.segments.push_back(
+            {good.position.face, good.position.branch, good.segment_start, good.position.beta, partial});
     }
     w.length = good.length;
     w.end = good.position;
@@ -355,10 +421,56 @@ Walk Streamline_walker::walk(Position pos, const Walk_settings& s, Proximity& pr
   return w;
 }
 
-Position Streamline_walker::start_position(int face, const Barycentric& beta) const
+bool Streamline_walker::end_at_singular_vertex(Walk& w, Position& pos, int last_branch, bool keep_segments) const
+{
+  if(singular_list.empty()) return false;
+  // The faces that hold the end point: where the walk is and where its last segment ran
+  // (they differ after a sink edge, whose point is on their shared edge).
+  const int candidates[2] = {pos.face, w.faces.empty() ? -1 : w.faces.back()};
+  int best_face = -1, best_vertex = -1;
+  double best_distance = infinity;
+  for(int f : candidates)
+  {
+    if(f < 0) continue;
+    for(int v : mesh->face_vertices(f))
+      if(singular_vertex[v] && distance3(mesh->position(v), pos.point) < best_distance)
+      {
+        best_distance = distance3(mesh->position(v), pos.point);
+        best_face = f;
+        best_vertex = v;
+      }
+  }
+  if(best_face < 0) return false;
+  // The end point in barycentric coordinates of the chosen face: it lies on the corners
+  // the face shares with `pos.face` (all three if it is that face).
+  Barycentric start{{0, 0, 0}};
+  for(int k = 0; k < 3; ++k)
+  {
+    const int m = local_corner(pos.face, mesh->face_vertices(best_face)[k]);
+    if(m >= 0) start[k] = pos.beta[m];
+  }
+  start = normalised(start);
+  Position end;
+  end.face = best_face;
+  end.branch = best_face == pos.face ? pos.branch : last_branch;
+  place_on_corner(end, local_corner(best_face, best_vertex));
+  if(best_distance > 0)
+  {
+    w.points.push_back(end.point);
+    w.faces.push_back(best_face);
+    if(keep_segments) w.segments.push_back({best_face, end.branch, start, end.beta, best_distance});
+    w.length += best_distance;
+  }
+  w.stop = Streamline_stop::singular_vertex;
+  pos = end;
+  return true;
+}
+
+Position Streamline_walker::start_position(int face, const Barycentric& beta, int branch) const
 {
   Position pos;
   pos.face = face;
+  pos.branch = branch;
   pos.beta = normalised(beta);
   for(int k = 0; k < 3; ++k)
     if(pos.beta[k] >= 1 - vertex_snap)
@@ -381,9 +493,7 @@ Walk_settings Streamline_walker::settings(const Streamline_options& o, double si
   return s;
 }
 
-// Joins a backward and a forward walk from the same seed into one streamline
-
-Streamline Streamline_walker::join(const Walk* backward, const Walk& forward, int seed_face)
+Streamline Streamline_walker::join(const Walk* backward, const Walk& forward, const Position& seed)
 {
   Streamline line;
   std::vector<int> segment_faces;
@@ -397,7 +507,8 @@ Streamline Streamline_walker::join(const Walk* backward, const Walk& forward, in
   line.points.insert(line.points.end(), forward.points.begin(), forward.points.end());
   segment_faces.insert(segment_faces.end(), forward.faces.begin(), forward.faces.end());
   line.faces = segment_faces;
-  line.faces.push_back(segment_faces.empty() ? seed_face : segment_faces.back());
+  line.faces.push_back(segment_faces.empty() ? seed.face : segment_faces.back());
+  line.branch = seed.branch;
   line.forward_stop = forward.stop;
   line.closed = forward.stop == Streamline_stop::closed_loop;
   return line;
@@ -415,6 +526,7 @@ Streamline Streamline_walker::trace(const Position& start, const Streamline_opti
     Walk_settings s = settings(o, 1);
     s.check_closure = closure_tolerance > 0;
     s.seed_face = start.face;
+    s.seed_branch = start.branch;
     s.seed_layout = layout_of(start.face, start.beta);
     s.closure_tolerance = closure_tolerance;
     s.keep_segments = keep_segments;
@@ -436,11 +548,11 @@ Streamline Streamline_walker::trace(const Position& start, const Streamline_opti
       for(std::size_t i = backward.segments.size(); i-- > 0;)
       {
         const Segment_record& r = backward.segments[i];
-        segments->push_back({r.face, r.end, r.start, r.length});
+        segments->push_back({r.face, r.branch, r.end, r.start, r.length});
       }
     segments->insert(segments->end(), forward.segments.begin(), forward.segments.end());
   }
-  return join(do_backward ? &backward : nullptr, forward, start.face);
+  return join(do_backward ? &backward : nullptr, forward, start);
 }
 
 

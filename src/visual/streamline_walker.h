@@ -17,6 +17,7 @@
 #include <limits>
 #include <memory>
 #include <random>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -53,14 +54,16 @@ inline Barycentric normalised(Barycentric b)
   return b;
 }
 
-// Where a walk is: a face, barycentric coordinates in it, and whether the point is
-// on the edge it came through (local index) or on a vertex (local corner).
+// Where a walk is: a face, barycentric coordinates in it, whether the point is on the
+// edge it came through (local index) or on a vertex (local corner), and which of the
+// face's n vectors it follows.
 struct Position
 {
   int face = -1;
   Barycentric beta{{1. / 3, 1. / 3, 1. / 3}};
   int entered_edge = -1; // local edge of `face` the walk entered through
   int corner = -1;       // local corner of `face` the point sits on
+  int branch = 0;        // the vector of `face` followed (0 for a vector field)
   V3 point{{0, 0, 0}};
 };
 
@@ -68,6 +71,7 @@ struct Position
 struct Segment_record
 {
   int face;
+  int branch;
   Barycentric start, end;
   double length;
 };
@@ -82,6 +86,7 @@ struct Walk_settings
   // Loop closure (forward walks from a seed).
   bool check_closure = false;
   int seed_face = -1;
+  int seed_branch = 0;
   V2 seed_layout{{0, 0}};
   double closure_tolerance = 0;
   bool keep_segments = false;
@@ -106,7 +111,14 @@ struct No_proximity
   void record(const V3&, double) {}
 };
 
-/// The field of one mesh prepared for walking, and the walk itself.
+/// \brief The field of one mesh prepared for walking, and the walk itself.
+///
+/// The field has `n` vectors per face: a first one (`Face_data::direction`) and the
+/// others turned from it by `2 pi j / n`; a vector field is the case `n = 1`.  A walk
+/// follows one of them, its *branch*, and keeps following the one closest to it: the
+/// branch is matched anew in each face it enters (`matching_branch`), after carrying the
+/// vector across the edge or the vertex it came through.  For `n = 1` the match is the
+/// face's only vector, so that vector fields and n-fields share every step of the walk.
 class Streamline_walker
 {
 public:
@@ -114,17 +126,24 @@ public:
   {
     std::array<V2, 3> corner;   // the 2D layout
     std::array<V2, 3> gradient; // gradients of the barycentric coordinates
-    V2 direction;               // the field (frame coordinates = layout coordinates)
+    V2 direction;               // the first vector (frame coordinates = layout coordinates)
     double magnitude;
   };
 
-  /// \throws Invalid_input if the field's size is wrong or an entry is not finite.
-  Streamline_walker(std::shared_ptr<const Intrinsic_mesh> mesh, const Eigen::VectorXd& field);
+  /// `field`: one of the n vectors of each face (frame coordinates, `2 nf`);
+  /// `singular_vertices`: where walks stop (see `Streamline_tracer`).
+  /// \throws Invalid_input for a wrong size, non-finite entries, `n < 1` or a vertex out of range.
+  Streamline_walker(std::shared_ptr<const Intrinsic_mesh> mesh, const Eigen::VectorXd& field, int n,
+                    const std::vector<int>& singular_vertices);
 
   std::shared_ptr<const Intrinsic_mesh> mesh;
+  int n = 1;
   std::vector<Face_data> faces;
+  std::vector<V2> turn; // (cos, sin) of 2 pi j / n
   std::vector<int> vertex_face_start, vertex_faces; // faces around each vertex (CSR)
   std::vector<char> boundary_vertex;
+  std::vector<char> singular_vertex;
+  std::vector<int> singular_list;
   double maximum_magnitude = 0;
   double diagonal = 0;
   V3 box_min{{0, 0, 0}};
@@ -132,12 +151,38 @@ public:
 
   double to_absolute(double value, Length_unit unit) const;
 
-  V2 direction(int f, const Walk_settings& s) const
+  // Vector `branch` of face `f`, at its length.
+  V2 field_vector(int f, int branch) const
   {
-    const Face_data& F = faces[f];
-    const double k = s.sign / F.magnitude;
-    if(s.rotated) return {-k * F.direction[1], k * F.direction[0]};
-    return {k * F.direction[0], k * F.direction[1]};
+    const V2& u = faces[f].direction;
+    if(branch == 0) return u;
+    const V2& c = turn[branch];
+    return {c[0] * u[0] - c[1] * u[1], c[1] * u[0] + c[0] * u[1]};
+  }
+
+  // The branch of face `f` whose vector is closest in angle to `reference` (layout
+  // coordinates of `f`).
+  int matching_branch(int f, const V2& reference) const
+  {
+    if(n == 1) return 0;
+    const V2& u = faces[f].direction;
+    const double angle = std::atan2(cross2(u, reference), dot2(u, reference));
+    const int j = static_cast<int>(std::lround(angle * n / (2 * M_PI)));
+    return ((j % n) + n) % n;
+  }
+
+  // The two vectors of an n-field that are the same line: the branch itself and, for
+  // even n, its opposite.
+  bool same_line(int a, int b) const { return a == b || (n % 2 == 0 && a == (b + n / 2) % n); }
+
+  // The unit direction a walk moves in: the branch, against it for `sign < 0`, turned
+  // by a quarter for walks across the field.
+  V2 direction(int f, int branch, const Walk_settings& s) const
+  {
+    const V2 v = field_vector(f, branch);
+    const double k = s.sign / faces[f].magnitude;
+    if(s.rotated) return {-k * v[1], k * v[0]};
+    return {k * v[0], k * v[1]};
   }
 
   V3 point_of(int f, const Barycentric& b) const
@@ -162,10 +207,18 @@ public:
     return t[0] == v ? 0 : (t[1] == v ? 1 : (t[2] == v ? 2 : -1));
   }
 
-  // The face around vertex `v` (other than `exclude`) into which the walk continues
-  // from the vertex: its direction must point strictly into the face; among several,
-  // the one closest to `incoming` (a 3D direction, or zero).  -1 if none.
-  int face_leaving_vertex(int v, int exclude, const V3& incoming, const Walk_settings& s) const;
+  // `v` (layout coordinates of `f`) in the layout of the neighbour `g` across their
+  // shared edge `e`: the rotation that takes the edge in `f`'s layout to the edge in `g`'s
+  // (the unfolding of the two faces into one plane); its length is not kept.
+  V2 carried_across(int f, int g, int e, const V2& v) const;
+
+  // The face around vertex `v` (other than `exclude`) into which the walk continues from
+  // the vertex, with its branch: in each face the branch closest to `reference` (the 3D
+  // field vector followed so far); its direction must point strictly into the face; among
+  // several faces, the one closest to `incoming` (the 3D direction of the walk so far, or
+  // zero).  Face -1 if none.
+  std::pair<int, int> face_leaving_vertex(int v, int exclude, const V3& incoming, const V3& reference,
+                                          const Walk_settings& s) const;
 
   // Why a walk that cannot leave vertex `v` stops: all faces there have no field, or
   // the field leaves the surface (a boundary vertex), or the vertex is a sink.
@@ -187,12 +240,12 @@ public:
   template <class Proximity>
   Walk walk(Position pos, const Walk_settings& s, Proximity& proximity) const;
 
-  Position start_position(int face, const Barycentric& beta) const;
+  Position start_position(int face, const Barycentric& beta, int branch = 0) const;
   Walk_settings settings(const Streamline_options& o, double sign) const;
 
   // Joins a backward and a forward walk from the same seed into one streamline
   // running along the field.
-  static Streamline join(const Walk* backward, const Walk& forward, int seed_face);
+  static Streamline join(const Walk* backward, const Walk& forward, const Position& seed);
 
   // A streamline from `start` (forward and backward as `o` asks), with the proximity
   // tests of each direction (none if null); `segments` receives the pieces in the
@@ -205,6 +258,11 @@ public:
   // A random point of the surface, uniform by area.
   Position random_position(std::mt19937_64& gen, const std::vector<double>& cumulative_area) const;
   std::vector<double> cumulative_areas() const;
+
+private:
+  // A walk that ended where the field converges (a sink or a stall) in a face with a
+  // singular corner went into that singularity: it is ended there.
+  bool end_at_singular_vertex(Walk& w, Position& pos, int last_branch, bool keep_segments) const;
 };
 
 /// Evenly spaced streamlines (evenly_spaced_streamlines.cpp).
