@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The separation test of evenly spaced streamlines (private to src/visual): samples of
-// the accepted streamlines in a uniform grid, and the test a walk runs at each sample.
+// the accepted streamlines in a uniform grid, and the test a walk runs at each sample,
+// family by family for n-fields.
 
 #ifndef CGAL_TANGENT_VECTOR_FIELDS_SRC_VISUAL_STREAMLINE_PROXIMITY_H
 #define CGAL_TANGENT_VECTOR_FIELDS_SRC_VISUAL_STREAMLINE_PROXIMITY_H
@@ -25,15 +26,16 @@ public:
     V3 point;
     int line;
     double arc; // signed arc length from the seed of its line
+    V3 tangent; // unit vector of the field's branch the line follows there
   };
 
   Sample_grid(double cell, const V3& origin) : cell_(cell), origin_(origin) {}
 
-  void insert(const V3& p, int line, double arc)
+  void insert(const V3& p, int line, double arc, const V3& tangent)
   {
     const std::uint64_t key = key_of(cell_of(p));
     cells_[key].push_back(static_cast<int>(samples_.size()));
-    samples_.push_back({p, line, arc});
+    samples_.push_back({p, line, arc, tangent});
     keys_.push_back(key);
   }
 
@@ -92,10 +94,32 @@ private:
   std::vector<std::uint64_t> keys_;
 };
 
-// The proximity test of the streamline being traced in evenly spaced seeding.
+// Whether two streamlines near each other belong to the same family of an n-field, from
+// their directions there: the n vectors of a face form n/2 families of lines for even n
+// (a vector and its opposite are the same line), n families for odd n, 2 pi / n apart; two
+// directions are of one family if they are closer than half that, pi / n (up to sign for
+// even n).  Branch numbers cannot tell, since each face numbers its vectors from its own
+// first one, and a streamline that turns around a singularity changes family.  With one
+// family (vector fields, line fields) every streamline counts.
+struct Family_test
+{
+  explicit Family_test(int n) : n(n), cos_half_gap(std::cos(M_PI / n)) {}
+  bool same(const V3& a, const V3& b) const
+  {
+    if(number_of_families(n) == 1) return true;
+    const double c = dot3(a, b);
+    return (n % 2 == 0 ? std::abs(c) : c) > cos_half_gap;
+  }
+  int n;
+  double cos_half_gap;
+};
+
+// The proximity test of the streamline being traced in evenly spaced seeding: against the
+// samples of its own family only, so that the families of an n-field cross each other.
 struct Separation_test
 {
   Sample_grid* grid;
+  Family_test family;
   int line;
   double sign;     // +1 forward (arcs >= 0), -1 backward
   double test_distance;
@@ -105,11 +129,12 @@ struct Separation_test
   double step() const { return sample_step; }
   // True if `p`, reached after `walked`, is too close to another streamline or to a
   // distant part of this one.
-  bool near(const V3& p, double walked) const
+  bool near(const V3& p, double walked, const V3& tangent) const
   {
     const double arc = sign * walked;
     const bool forward = sign > 0;
     return grid->any_within(p, test_distance, [&](const Sample_grid::Sample& s) {
+      if(!family.same(s.tangent, tangent)) return false;
       if(s.line != line) return true;
       if(std::abs(s.arc - arc) < self_gap) return false;
       // While the forward part runs, its first samples are left to the loop-closure test.
@@ -117,12 +142,12 @@ struct Separation_test
       return true;
     });
   }
-  void record(const V3& p, double walked) { grid->insert(p, line, sign * walked); }
+  void record(const V3& p, double walked, const V3& tangent) { grid->insert(p, line, sign * walked, tangent); }
   // The test at a sample; a sample that passes is recorded.
-  bool too_close(const V3& p, double walked)
+  bool too_close(const V3& p, double walked, const V3& tangent)
   {
-    if(near(p, walked)) return true;
-    grid->insert(p, line, sign * walked);
+    if(near(p, walked, tangent)) return true;
+    grid->insert(p, line, sign * walked, tangent);
     return false;
   }
 };

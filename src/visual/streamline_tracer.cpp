@@ -54,19 +54,23 @@ std::vector<Streamline> fur_strokes(const internal::Streamline_walker& walker, c
 {
   const double length = walker.to_absolute(o.length, o.length_unit);
   if(!(length > 0) || !std::isfinite(length)) throw Invalid_input("fur: the stroke length must be positive");
+  if(o.branch < -1 || o.branch >= walker.n)
+    throw Invalid_input("fur: branch " + std::to_string(o.branch) + " asked of a field of " +
+                        std::to_string(walker.n) + " vector(s) per face (-1: all)");
   long count = o.number_of_strokes;
   if(count <= 0)
   {
     if(!(o.density > 0)) throw Invalid_input("fur: give number_of_strokes or a positive density");
     count = static_cast<long>(std::llround(o.density * walker.total_area));
   }
+  const int first = o.branch < 0 ? 0 : o.branch, last = o.branch < 0 ? walker.n - 1 : o.branch;
   std::mt19937_64 gen(o.random_seed);
   const std::vector<double> cumulative = walker.cumulative_areas();
   std::vector<Streamline> strokes;
-  strokes.reserve(static_cast<std::size_t>(count));
+  strokes.reserve(static_cast<std::size_t>(count * (last - first + 1)));
   for(long i = 0; i < count; ++i)
   {
-    const Position root = walker.random_position(gen, cumulative);
+    Position root = walker.random_position(gen, cumulative);
     Streamline_options t = o.tracing;
     t.forward = true;
     t.backward = false;
@@ -76,9 +80,13 @@ std::vector<Streamline> fur_strokes(const internal::Streamline_walker& walker, c
       t.maximum_length = length * walker.faces[root.face].magnitude / std::max(walker.maximum_magnitude, 1e-300);
     t.loop_closure_tolerance = 0;
     if(!(t.maximum_length > 0)) continue;
-    No_proximity* none = nullptr;
-    Streamline s = walker.trace(root, t, 0, none, none, false, nullptr);
-    if(s.points.size() >= 2) strokes.push_back(std::move(s));
+    for(int j = first; j <= last; ++j)
+    {
+      root.branch = j;
+      No_proximity* none = nullptr;
+      Streamline s = walker.trace(root, t, 0, none, none, false, nullptr);
+      if(s.points.size() >= 2) strokes.push_back(std::move(s));
+    }
   }
   return strokes;
 }
@@ -129,6 +137,7 @@ Streamline_tracer& Streamline_tracer::operator=(Streamline_tracer&&) noexcept = 
 
 const Intrinsic_mesh& Streamline_tracer::mesh() const { return *impl_->mesh; }
 int Streamline_tracer::n() const { return impl_->n; }
+int Streamline_tracer::number_of_families() const { return internal::number_of_families(impl_->n); }
 const std::vector<int>& Streamline_tracer::singular_vertices() const { return impl_->singular_list; }
 double Streamline_tracer::bounding_box_diagonal() const { return impl_->diagonal; }
 double Streamline_tracer::to_absolute(double value, Length_unit unit) const { return impl_->to_absolute(value, unit); }

@@ -261,13 +261,14 @@ Walk Streamline_walker::walk(Position pos, const Walk_settings& s, Proximity& pr
       }
     }
     // Proximity samples at multiples of `step` of the walked length.
+    const V3 tangent = next_sample <= w.length + t ? unit_tangent(f, pos.branch) : V3{{0, 0, 0}};
     while(next_sample <= w.length + t)
     {
       const double u = next_sample - w.length;
       const Barycentric b = normalised(
           {pos.beta[0] + u * rate[0], pos.beta[1] + u * rate[1], pos.beta[2] + u * rate[2]});
       const V3 p = point_of(f, b);
-      if(proximity.too_close(p, next_sample))
+      if(proximity.too_close(p, next_sample, tangent))
       {
         t = u;
         stop = Streamline_stop::too_close;
@@ -397,8 +398,10 @@ Walk Streamline_walker::walk(Position pos, const Walk_settings& s, Proximity& pr
   // A walk that came too close to another streamline is cut back to its last good
   // sample; so is one that stopped for another reason (a sink, the boundary) but
   // whose end beyond the last sample is too close.
+  const V3 end_tangent =
+      step < infinity && w.length > good.length ? unit_tangent(w.faces.back(), last_branch) : V3{{0, 0, 0}};
   if(step < infinity && w.length > good.length &&
-     (w.stop == Streamline_stop::too_close || proximity.near(w.points.back(), w.length)))
+     (w.stop == Streamline_stop::too_close || proximity.near(w.points.back(), w.length, end_tangent)))
   {
     w.points.resize(good.points);
     w.faces.resize(good.points - 1);
@@ -417,11 +420,11 @@ Walk Streamline_walker::walk(Position pos, const Walk_settings& s, Proximity& pr
     w.stop = Streamline_stop::too_close;
   }
   else if(step < infinity && w.length > good.length)
-    proximity.record(w.points.back(), w.length); // the end beyond the last sample
+    proximity.record(w.points.back(), w.length, end_tangent); // the end beyond the last sample
   return w;
 }
 
-bool Streamline_walker::end_at_singular_vertex(Walk& w, Position& pos, int last_branch, bool keep_segments) const
+bool Streamline_walker::end_at_singular_vertex(Walk& w, Position& pos, int& last_branch, bool keep_segments) const
 {
   if(singular_list.empty()) return false;
   // The faces that hold the end point: where the walk is and where its last segment ran
@@ -460,6 +463,7 @@ bool Streamline_walker::end_at_singular_vertex(Walk& w, Position& pos, int last_
     w.faces.push_back(best_face);
     if(keep_segments) w.segments.push_back({best_face, end.branch, start, end.beta, best_distance});
     w.length += best_distance;
+    last_branch = end.branch;
   }
   w.stop = Streamline_stop::singular_vertex;
   pos = end;

@@ -40,6 +40,10 @@ inline double dot3(const V3& a, const V3& b) { return a[0] * b[0] + a[1] * b[1] 
 inline V3 sub3(const V3& a, const V3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 inline double distance3(const V3& a, const V3& b) { return std::sqrt(dot3(sub3(a, b), sub3(a, b))); }
 
+// The families of lines of an n-field: n / 2 for even n (a vector and its opposite are
+// one line), n for odd n.
+inline int number_of_families(int n) { return n % 2 == 0 ? n / 2 : n; }
+
 // Clamps to non-negative and normalises to sum 1.
 inline Barycentric normalised(Barycentric b)
 {
@@ -106,9 +110,9 @@ struct Walk
 struct No_proximity
 {
   double step() const { return infinity; }
-  bool too_close(const V3&, double) { return false; }
-  bool near(const V3&, double) const { return false; }
-  void record(const V3&, double) {}
+  bool too_close(const V3&, double, const V3&) { return false; }
+  bool near(const V3&, double, const V3&) const { return false; }
+  void record(const V3&, double, const V3&) {}
 };
 
 /// \brief The field of one mesh prepared for walking, and the walk itself.
@@ -174,6 +178,18 @@ public:
   // The two vectors of an n-field that are the same line: the branch itself and, for
   // even n, its opposite.
   bool same_line(int a, int b) const { return a == b || (n % 2 == 0 && a == (b + n / 2) % n); }
+
+  // Vector `branch` of face `f` in 3D, of length 1 (0 where the field vanishes).
+  V3 unit_tangent(int f, int branch) const
+  {
+    const V2 u = field_vector(f, branch);
+    const double k = faces[f].magnitude > 0 ? 1 / faces[f].magnitude : 0;
+    return mesh->from_frame(f, k * u[0], k * u[1]);
+  }
+
+  // The branch that stands for the family of `branch` (`[0, n / 2)` for even n: a vector
+  // and its opposite trace the same line).
+  int family_branch(int branch) const { return n % 2 == 0 ? branch % (n / 2) : branch; }
 
   // The unit direction a walk moves in: the branch, against it for `sign < 0`, turned
   // by a quarter for walks across the field.
@@ -262,7 +278,7 @@ public:
 private:
   // A walk that ended where the field converges (a sink or a stall) in a face with a
   // singular corner went into that singularity: it is ended there.
-  bool end_at_singular_vertex(Walk& w, Position& pos, int last_branch, bool keep_segments) const;
+  bool end_at_singular_vertex(Walk& w, Position& pos, int& last_branch, bool keep_segments) const;
 };
 
 /// Evenly spaced streamlines (evenly_spaced_streamlines.cpp).

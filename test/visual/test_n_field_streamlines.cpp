@@ -1,128 +1,22 @@
 // Copyright (c) 2026 The Tangent_vector_fields authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
-// Streamlines of n-direction fields: one branch followed across edges by matching, n = 1
-// being the vector tracer, stops at the singular vertices, the hatching of all families
-// and fur per branch; checked against the parameter lines of a torus of revolution and the
-// singularities of the smoothest cross field of a sphere.
+// Streamlines of n-direction fields, one at a time: one branch followed across edges by
+// matching, n = 1 being the vector tracer, the parameter lines of a torus of revolution
+// traced by its cross field, invariance to which of the n vectors a face stores, stops at
+// the singularities of the smoothest cross field of a sphere, refusals.
 
-#include "test_meshes.h"
+#include "n_field_streamline_support.h"
 
-#include <CGAL/Tangent_vector_fields/Discrete_operators.h>
 #include <CGAL/Tangent_vector_fields/N_field_singularities.h>
 #include <CGAL/Tangent_vector_fields/Smoothest_n_field_solver.h>
 #include <CGAL/Tangent_vector_fields/Streamlines.h>
 
-#include <gtest/gtest.h>
-
-#include <algorithm>
-#include <cmath>
-#include <functional>
 #include <random>
-#include <string>
 
-namespace TVF = CGAL::Tangent_vector_fields;
-using namespace tvf_test;
+using namespace nstream_test;
 
 namespace {
-
-typedef std::array<double, 3> P3;
-typedef Mesh::Property_map<Face_index, Vector_3> Field;
-
-P3 sub(const P3& a, const P3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-double dot(const P3& a, const P3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-P3 cross(const P3& a, const P3& b)
-{
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double norm(const P3& a) { return std::sqrt(dot(a, a)); }
-P3 unit(const P3& a) { return {a[0] / norm(a), a[1] / norm(a), a[2] / norm(a)}; }
-double degrees(double radians) { return radians * 180 / M_PI; }
-
-std::shared_ptr<const TVF::N_field_operators> n_field_operators(const Mesh& mesh, int n)
-{
-  return std::make_shared<const TVF::N_field_operators>(TVF::Discrete_operators<Mesh>(mesh).shared_matrices(), n);
-}
-
-// Frame coordinates turned by `angle`.
-std::array<double, 2> turned(double a, double b, double angle)
-{
-  return {std::cos(angle) * a - std::sin(angle) * b, std::sin(angle) * a + std::cos(angle) * b};
-}
-
-// The torus of make_torus (axis z, radii R = 1, r = 0.4): the unit directions of the
-// parallel (around the axis) and of the meridian (around the tube) through p.
-const double torus_R = 1.0, torus_r = 0.4;
-P3 parallel_direction(const P3& p) { return unit({-p[1], p[0], 0}); }
-P3 meridian_direction(const P3& p)
-{
-  const double a = std::atan2(p[1], p[0]), b = std::atan2(p[2], std::hypot(p[0], p[1]) - torus_R);
-  return {-std::sin(b) * std::cos(a), -std::sin(b) * std::sin(a), std::cos(b)};
-}
-
-// The parallel direction at each face's centroid, in frame coordinates (projected on the face).
-Eigen::VectorXd torus_parallels(const TVF::Intrinsic_mesh& M)
-{
-  Eigen::VectorXd x(2 * M.number_of_faces());
-  for(int f = 0; f < M.number_of_faces(); ++f)
-  {
-    P3 c = {0, 0, 0};
-    for(int v : M.face_vertices(f))
-      for(int i = 0; i < 3; ++i) c[i] += M.position(v)[i] / 3;
-    const auto ab = M.to_frame(f, parallel_direction(c));
-    x[2 * f] = ab[0];
-    x[2 * f + 1] = ab[1];
-  }
-  return x;
-}
-
-// Every point in its face; every segment along one of the n vectors of its face (but the
-// last one into a singular vertex); consecutive faces sharing an edge or a vertex that
-// holds the point between them.
-void expect_valid_n_streamline(const TVF::Intrinsic_mesh& M, const Eigen::VectorXd& vectors, int n,
-                               const TVF::Streamline& s)
-{
-  ASSERT_EQ(s.points.size(), s.faces.size());
-  ASSERT_LT(s.seed_index, s.points.size());
-  const double h = M.mean_edge_length();
-  for(std::size_t i = 0; i < s.points.size(); ++i)
-  {
-    const int f = s.faces[i];
-    ASSERT_GE(f, 0);
-    ASSERT_LT(f, M.number_of_faces());
-    const auto& t = M.face_vertices(f);
-    const P3 d = sub(s.points[i], M.position(t[0]));
-    EXPECT_LE(std::abs(dot(d, M.normal(f))), 1e-9 * h) << "point " << i << " off the plane of face " << f;
-    const P3 p1 = sub(M.position(t[1]), M.position(t[0])), p2 = sub(M.position(t[2]), M.position(t[0]));
-    const double area2 = dot(cross(p1, p2), M.normal(f));
-    const double b1 = dot(cross(d, p2), M.normal(f)) / area2, b2 = dot(cross(p1, d), M.normal(f)) / area2;
-    EXPECT_TRUE(b1 >= -1e-9 && b2 >= -1e-9 && 1 - b1 - b2 >= -1e-9) << "point " << i << " outside face " << f;
-  }
-  for(std::size_t i = 0; i + 1 < s.points.size(); ++i)
-  {
-    const int f = s.faces[i];
-    const P3 segment = sub(s.points[i + 1], s.points[i]);
-    const bool chord = (i == 0 && s.backward_stop == TVF::Streamline_stop::singular_vertex) ||
-                       (i + 2 == s.points.size() && s.forward_stop == TVF::Streamline_stop::singular_vertex);
-    if(norm(segment) > 1e-9 * h && !chord)
-    {
-      double best = -2;
-      for(int j = 0; j < n; ++j)
-      {
-        const auto ab = turned(vectors[2 * f], vectors[2 * f + 1], 2 * M_PI * j / n);
-        best = std::max(best, dot(unit(segment), unit(M.from_frame(f, ab[0], ab[1]))));
-      }
-      EXPECT_GT(best, 1 - 1e-12) << "segment " << i << " follows none of the vectors of face " << f;
-    }
-    if(i + 1 < s.number_of_segments() && s.faces[i + 1] != f)
-    {
-      int shared = 0;
-      for(int a : M.face_vertices(f))
-        for(int b : M.face_vertices(s.faces[i + 1])) shared += a == b;
-      EXPECT_GE(shared, 1) << "faces " << f << " and " << s.faces[i + 1] << " do not touch";
-    }
-  }
-}
 
 std::vector<std::pair<int, std::array<double, 3>>> random_seeds(int faces, int count, unsigned seed)
 {
@@ -141,19 +35,6 @@ std::vector<P3> part(const TVF::Streamline& s, bool forward)
   std::vector<P3> p(s.points.begin(), s.points.begin() + static_cast<long>(s.seed_index) + 1);
   std::reverse(p.begin(), p.end());
   return p;
-}
-
-void expect_invalid(const std::function<void()>& f, const std::string& reason)
-{
-  try
-  {
-    f();
-    ADD_FAILURE() << "accepted; expected a refusal with \"" << reason << "\"";
-  }
-  catch(const TVF::Invalid_input& e)
-  {
-    EXPECT_NE(std::string(e.what()).find(reason), std::string::npos) << e.what();
-  }
 }
 
 } // namespace
@@ -433,7 +314,6 @@ TEST(NFieldStreamlines, StopAtTheSingularitiesOfTheSmoothestCrossFieldOfASphere)
     }
   EXPECT_GT(singular_stops, 0);
 }
-
 TEST(NFieldStreamlines, BadInputIsRefusedWithAReason)
 {
   const Mesh sphere = make_icosphere(1);
@@ -459,4 +339,16 @@ TEST(NFieldStreamlines, BadInputIsRefusedWithAReason)
     expect_invalid([&] { tracer.trace(0, {1, 1, 1}, options); },
                    "branch " + std::to_string(branch) + " asked of a field of 4 vector(s) per face");
   }
+  TVF::Fur_options fur;
+  fur.number_of_strokes = 10;
+  for(int branch : {-2, 4})
+  {
+    fur.branch = branch;
+    expect_invalid([&] { tracer.fur(fur); },
+                   "fur: branch " + std::to_string(branch) + " asked of a field of 4 vector(s) per face (-1: all)");
+  }
+  TVF::Evenly_spaced_options even;
+  even.tracing.branch = 1;
+  expect_invalid([&] { tracer.evenly_spaced(even); }, "tracing.branch must be 0");
 }
+

@@ -116,7 +116,8 @@ struct Evenly_spaced_options
   int maximum_streamlines = 0;
   /// Seeds the order of the random candidate seeds.
   unsigned random_seed = 1;
-  /// Limits of each trace (`maximum_length` is per direction).
+  /// Limits of each trace (`maximum_length` is per direction; `branch` must be 0: every
+  /// family is traced).
   Streamline_options tracing;
 };
 
@@ -126,10 +127,16 @@ struct Fur_options
   /// Length of each stroke (traced forward from its root), in `length_unit`.
   double length = 0.02;
   Length_unit length_unit = Length_unit::bounding_box_diagonal;
-  /// Number of strokes; if 0, `density` times the total area.
+  /// Number of roots (one stroke per root for a vector field, see `branch`); if 0,
+  /// `density` times the total area.
   int number_of_strokes = 0;
-  /// Strokes per unit area (in the mesh's units squared), used when `number_of_strokes` is 0.
+  /// Roots per unit area (in the mesh's units squared), used when `number_of_strokes` is 0.
   double density = 0;
+  /// The strokes of each root: -1 (the default) one along each of the n vectors of its
+  /// face, the n-fold glyph of an n-field (two opposite strokes, a line, for a line field;
+  /// one stroke for a vector field); `0 <= branch < n` only along vector `branch` of the
+  /// face (numbered from the face's first vector, as `Streamline_options::branch`).
+  int branch = -1;
   /// Scale each stroke's length by the magnitude of the field at its root relative to
   /// the largest magnitude, so that the strokes show the strength of the field.
   bool scale_length_by_magnitude = false;
@@ -215,6 +222,8 @@ public:
 
   /// The number of vectors per face (1 for a vector field).
   int n() const;
+  /// The families of lines of `evenly_spaced`: `n / 2` for even n, `n` for odd n.
+  int number_of_families() const;
   /// The vertices where streamlines stop, in increasing order.
   const std::vector<int>& singular_vertices() const;
   const Intrinsic_mesh& mesh() const;
@@ -247,10 +256,27 @@ public:
   /// uniform grid; they approximate the geodesic ones well when the separation is
   /// small compared with the curvature radii.  The result is deterministic for a
   /// given `random_seed`.
+  ///
+  /// For an n-field every family of lines is drawn, each at the separation: `n / 2`
+  /// families for even n (a vector and its opposite are one line: two crossing families
+  /// for a cross field, one for a line field), `n` for odd n.  Each random point seeds one
+  /// streamline of each family (`Streamline::branch` in `[0, number_of_families())`), a seed
+  /// beside a streamline continues its family, and the separation is tested only between
+  /// streamlines of the same family, so that families cross.  Which family a sample belongs
+  /// to is told by its direction: another streamline's sample counts when their directions
+  /// are within `pi / n` of each other (up to sign for even n), half the angle between
+  /// families; the branch numbers cannot tell, since each face numbers its vectors from its
+  /// own first one and a streamline turning around a singularity changes family.
+  /// \throws Invalid_input for a separation that is not positive, a `test_ratio` outside
+  ///         `(0, 1]`, or `tracing.branch` other than 0.
   std::vector<Streamline> evenly_spaced(const Evenly_spaced_options& options = Evenly_spaced_options()) const;
 
-  /// Short strokes traced forward from random roots, uniformly distributed by area.
-  /// Strokes of zero length (roots in zero-field faces) are left out.
+  /// Short strokes traced forward from random roots, uniformly distributed by area: per
+  /// root one along each of the n vectors of its face, or one along the branch asked for
+  /// (`Fur_options::branch`), consecutive in the result.  Strokes of zero length (roots in
+  /// zero-field faces) are left out.
+  /// \throws Invalid_input for a length that is not positive, neither a count nor a
+  ///         density, or a branch outside `[-1, n)`.
   std::vector<Streamline> fur(const Fur_options& options) const;
 
 private:
