@@ -104,31 +104,38 @@ Streamline_tracer::Streamline_tracer(std::shared_ptr<const Intrinsic_mesh> mesh,
   : impl_(std::make_unique<Impl>(std::move(mesh), field, n, singular_vertices))
 {}
 
-namespace {
+namespace internal {
 
-// The walker of an n-field in the power representation: its first vectors and the
-// interior vertices of non-zero index.
-std::unique_ptr<internal::Streamline_walker> n_field_walker(const N_field_operators& operators,
-                                                            const Eigen::VectorXd& z)
+std::vector<int> n_field_stop_vertices(const N_field_operators& operators, const Eigen::VectorXd& z)
 {
   const Intrinsic_mesh& M = operators.mesh();
   if(z.size() != 2 * static_cast<Eigen::Index>(M.number_of_faces()))
     throw Invalid_input("n-field streamlines: the field has " + std::to_string(z.size()) +
                         " entries, the mesh needs " + std::to_string(2 * M.number_of_faces()));
   if(!z.allFinite()) throw Invalid_input("n-field streamlines: the field has non-finite entries");
-  std::vector<int> singular;
+  std::vector<int> stops;
   for(const N_field_singularity& s : n_field_singularities(operators, z))
-    if(!s.on_boundary) singular.push_back(s.vertex);
-  // For n = 1 the power representation is the vector itself (to_vectors would round it).
-  return std::make_unique<internal::Streamline_walker>(operators.operators().shared_mesh(),
-                                                       operators.n() == 1 ? z : operators.to_vectors(z),
-                                                       operators.n(), singular);
+    if(!s.on_boundary) stops.push_back(s.vertex); // the boundary stops streamlines anyway
+  return stops;
+}
+
+} // namespace internal
+
+namespace {
+
+// The walker of an n-field in the power representation: its first vectors (for n = 1 the
+// power representation is the vector itself; to_vectors would round it) and its stops.
+internal::Streamline_walker n_field_walker(const N_field_operators& operators, const Eigen::VectorXd& z)
+{
+  const std::vector<int> stops = internal::n_field_stop_vertices(operators, z);
+  return internal::Streamline_walker(operators.operators().shared_mesh(),
+                                     operators.n() == 1 ? z : operators.to_vectors(z), operators.n(), stops);
 }
 
 } // namespace
 
 Streamline_tracer::Streamline_tracer(const N_field_operators& operators, const Eigen::VectorXd& z)
-  : impl_(std::make_unique<Impl>(std::move(*n_field_walker(operators, z))))
+  : impl_(std::make_unique<Impl>(n_field_walker(operators, z)))
 {}
 
 Streamline_tracer::~Streamline_tracer() = default;

@@ -2,9 +2,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 
 // Many streamlines of n-direction fields: the hatching (evenly spaced streamlines of every
-// family) and fur per branch, checked against the parameter lines of a torus of revolution.
+// family) and fur per branch, checked against the parameter lines of a torus of revolution;
+// the generic functions on face maps holding any one of the n vectors.
 
 #include "n_field_streamline_support.h"
+
+#include <CGAL/Tangent_vector_fields/Streamlines.h>
+#include <CGAL/Tangent_vector_fields/smoothest_n_field.h>
 
 #include <random>
 
@@ -165,3 +169,69 @@ TEST(NFieldStreamlines, FurHasAStrokeAlongEachVectorOfItsRoot)
   }
 }
 
+
+TEST(NFieldStreamlines, GenericFunctionsTraceTheVectorsOfAFaceMap)
+{
+  // A face map holding any one of the n vectors per face, as smoothest_n_field writes it
+  // and then turned by random multiples of 2 pi / 4: branch j of a face is its map vector
+  // turned by 2 pi j / 4; streamlines stop at the singularities n_field_singularities
+  // reports; the free functions agree with the tracer class.
+  Mesh sphere = make_icosphere(3);
+  auto field = sphere.add_property_map<Face_index, Vector_3>("f:cross", Vector_3(0, 0, 0)).first;
+  const auto singular = TVF::smoothest_n_field(sphere, 4, field);
+  ASSERT_EQ(singular.size(), 8u);
+  std::mt19937 gen(3);
+  for(Face_index f : sphere.faces())
+  {
+    // A quarter turn about the face's normal: n x v.
+    const auto h = sphere.halfedge(f);
+    const Vector_3 normal = CGAL::unit_normal(sphere.point(sphere.source(h)), sphere.point(sphere.target(h)),
+                                              sphere.point(sphere.target(sphere.next(h))));
+    for(int k = std::uniform_int_distribution<int>(0, 3)(gen); k > 0; --k) field[f] = CGAL::cross_product(normal, field[f]);
+  }
+  TVF::Mesh_streamline_tracer<Mesh> tracer(sphere, 4, field);
+  EXPECT_EQ(tracer.tracer().n(), 4);
+  std::vector<int> expected;
+  for(const auto& s : singular) expected.push_back(static_cast<int>(std::size_t(s.first)));
+  std::sort(expected.begin(), expected.end());
+  EXPECT_EQ(tracer.tracer().singular_vertices(), expected);
+
+  TVF::Streamline_options options;
+  options.maximum_length = 1;
+  std::mt19937 pick(4);
+  for(int i = 0; i < 30; ++i)
+  {
+    const Face_index f(std::uniform_int_distribution<int>(0, static_cast<int>(sphere.number_of_faces()) - 1)(pick));
+    const auto h = sphere.halfedge(f);
+    const Point_3 seed = CGAL::centroid(sphere.point(sphere.source(h)), sphere.point(sphere.target(h)),
+                                        sphere.point(sphere.target(sphere.next(h))));
+    const Vector_3 normal = CGAL::unit_normal(sphere.point(sphere.source(h)), sphere.point(sphere.target(h)),
+                                              sphere.point(sphere.target(sphere.next(h))));
+    Vector_3 expected_direction = field[f] / std::sqrt(field[f].squared_length());
+    for(int j = 0; j < 4; ++j)
+    {
+      options.branch = j;
+      const TVF::Streamline s = tracer.trace(f, seed, options);
+      EXPECT_EQ(s.points, TVF::trace_n_field_streamline(sphere, 4, field, f, seed, options).points);
+      const P3 first = unit(sub(s.points[s.seed_index + 1], s.points[s.seed_index]));
+      EXPECT_NEAR(dot(first, {expected_direction.x(), expected_direction.y(), expected_direction.z()}), 1, 1e-9);
+      expected_direction = CGAL::cross_product(normal, expected_direction);
+    }
+  }
+  TVF::Evenly_spaced_options even;
+  even.separation = 0.05;
+  const std::vector<TVF::Streamline> lines = tracer.evenly_spaced(even);
+  const std::vector<TVF::Streamline> again = TVF::evenly_spaced_n_field_streamlines(sphere, 4, field, even);
+  ASSERT_EQ(lines.size(), again.size());
+  for(std::size_t i = 0; i < lines.size(); ++i) EXPECT_EQ(lines[i].points, again[i].points);
+  TVF::Fur_options fur;
+  fur.number_of_strokes = 50;
+  fur.branch = 1;
+  const std::vector<TVF::Streamline> strokes = tracer.fur(fur), more = TVF::n_field_fur_strokes(sphere, 4, field, fur);
+  ASSERT_EQ(strokes.size(), more.size());
+  for(std::size_t i = 0; i < strokes.size(); ++i) EXPECT_EQ(strokes[i].points, more[i].points);
+
+  expect_invalid([&] { TVF::Mesh_streamline_tracer<Mesh>(sphere, 0, field); }, "n must be at least 1 (got 0)");
+  field[*sphere.faces().begin()] = Vector_3(std::nan(""), 0, 0);
+  expect_invalid([&] { TVF::evenly_spaced_n_field_streamlines(sphere, 4, field); }, "non-finite");
+}

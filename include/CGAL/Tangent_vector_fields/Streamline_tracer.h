@@ -284,6 +284,15 @@ private:
   std::unique_ptr<Impl> impl_;
 };
 
+namespace internal {
+
+/// The vertices where the streamlines of the n-field `z` (power representation) stop: its
+/// interior vertices of non-zero index (`n_field_indices`).
+/// \throws Invalid_input if `z` has the wrong size or non-finite entries.
+std::vector<int> n_field_stop_vertices(const N_field_operators& operators, const Eigen::VectorXd& z);
+
+} // namespace internal
+
 } // namespace Tangent_vector_fields
 } // namespace CGAL
 
