@@ -1,7 +1,8 @@
 // Copyright (c) 2026 The Tangent_vector_fields authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The exact walk from face to face in barycentric coordinates of each face's 2D layout.
+// The exact walk from face to face in barycentric coordinates of each face's 2D layout,
+// with the branch of an n-field matched in every face entered, and its stops.
 
 #include "streamline_walker.h"
 #include "streamline_proximity.h"
@@ -148,7 +149,6 @@ Streamline_stop Streamline_walker::stop_at_vertex(int v, const Walk_settings& s)
   if(!any_field) return Streamline_stop::zero_field;
   return boundary_vertex[v] ? Streamline_stop::boundary : Streamline_stop::sink_vertex;
 }
-
 
 template <class Proximity>
 Walk Streamline_walker::walk(Position pos, const Walk_settings& s, Proximity& proximity) const
@@ -393,7 +393,7 @@ Walk Streamline_walker::walk(Position pos, const Walk_settings& s, Proximity& pr
   }
   if(w.stop == Streamline_stop::sink_edge || w.stop == Streamline_stop::sink_vertex ||
      w.stop == Streamline_stop::stalled)
-    end_at_singular_vertex(w, pos, last_branch, s.keep_segments);
+    end_at_singular_vertex(w, pos, last_branch, s);
   w.end = pos;
   // A walk that came too close to another streamline is cut back to its last good
   // sample; so is one that stopped for another reason (a sink, the boundary) but
@@ -424,7 +424,7 @@ Walk Streamline_walker::walk(Position pos, const Walk_settings& s, Proximity& pr
   return w;
 }
 
-bool Streamline_walker::end_at_singular_vertex(Walk& w, Position& pos, int& last_branch, bool keep_segments) const
+bool Streamline_walker::end_at_singular_vertex(Walk& w, Position& pos, int& last_branch, const Walk_settings& s) const
 {
   if(singular_list.empty()) return false;
   // The faces that hold the end point: where the walk is and where its last segment ran
@@ -443,7 +443,8 @@ bool Streamline_walker::end_at_singular_vertex(Walk& w, Position& pos, int& last
         best_vertex = v;
       }
   }
-  if(best_face < 0) return false;
+  // The length limit holds for this segment too: beyond it the walk keeps its stop.
+  if(best_face < 0 || w.length + best_distance > s.maximum_length) return false;
   // The end point in barycentric coordinates of the chosen face: it lies on the corners
   // the face shares with `pos.face` (all three if it is that face).
   Barycentric start{{0, 0, 0}};
@@ -461,7 +462,7 @@ bool Streamline_walker::end_at_singular_vertex(Walk& w, Position& pos, int& last
   {
     w.points.push_back(end.point);
     w.faces.push_back(best_face);
-    if(keep_segments) w.segments.push_back({best_face, end.branch, start, end.beta, best_distance});
+    if(s.keep_segments) w.segments.push_back({best_face, end.branch, start, end.beta, best_distance});
     w.length += best_distance;
     last_branch = end.branch;
   }
@@ -520,8 +521,8 @@ Streamline Streamline_walker::join(const Walk* backward, const Walk& forward, co
 
 template <class Proximity>
 Streamline Streamline_walker::trace(const Position& start, const Streamline_options& o, double closure_tolerance,
-                 Proximity* forward_proximity, Proximity* backward_proximity, bool keep_segments,
-                 std::vector<Segment_record>* segments) const
+                                     Proximity* forward_proximity, Proximity* backward_proximity, bool keep_segments,
+                                     std::vector<Segment_record>* segments) const
 {
   No_proximity none;
   Walk forward, backward;
@@ -558,7 +559,6 @@ Streamline Streamline_walker::trace(const Position& start, const Streamline_opti
   }
   return join(do_backward ? &backward : nullptr, forward, start);
 }
-
 
 Position Streamline_walker::random_position(std::mt19937_64& gen, const std::vector<double>& cumulative_area) const
 {

@@ -277,8 +277,10 @@ public:
 
 private:
   // A walk that ended where the field converges (a sink or a stall) in a face with a
-  // singular corner went into that singularity: it is ended there.
-  bool end_at_singular_vertex(Walk& w, Position& pos, int& last_branch, bool keep_segments) const;
+  // singular corner went into that singularity: it is ended there, by a last segment in
+  // the face, unless that would pass the length limit.  `last_branch` is the branch of
+  // the last segment.
+  bool end_at_singular_vertex(Walk& w, Position& pos, int& last_branch, const Walk_settings& s) const;
 };
 
 /// Evenly spaced streamlines (evenly_spaced_streamlines.cpp).

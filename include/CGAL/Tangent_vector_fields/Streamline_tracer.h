@@ -180,7 +180,8 @@ struct Fur_options
 /// would stop by convergence -- a sink edge, a sink vertex, a stall -- at a point of a face
 /// that has a singular corner: in the piecewise-constant field, that is how a streamline
 /// runs into the singularity.  It is then ended at that corner (the nearest one) by a last
-/// segment inside the face, the only segment that does not follow the field.  Streamlines
+/// segment inside the face, the only segment that does not follow the field (unless that
+/// segment would pass the length limit: the streamline then keeps its stop).  Streamlines
 /// passing through the one-ring without converging go on.  The singular vertices are those
 /// given to the constructor: `n_field_indices` at interior vertices for an n-field (the
 /// boundary stops streamlines anyway), none for a vector field unless given.
