@@ -9,7 +9,8 @@
 // a cross field with two prescribed singularities (+1/4, -1/4) built into the connection;
 // and 4. cross fields softly aligned to the principal curvature directions (CGAL's jet
 // fitting), smoothest and spline, against their unaligned versions.  Prints energies and singularities (Poincare-Hopf: indices sum to 4 chi), and
-// writes the fields (first vector per face) as PLY face properties.
+// writes the fields (first vector per face) as PLY face properties and the hatching of the
+// smoothest cross field (its evenly spaced streamlines, two families) as OBJ polylines.
 //
 // Usage: n_field_design [mesh] [output-prefix] [number-of-eigenfields]
 
@@ -18,8 +19,10 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <CGAL/Tangent_vector_fields/N_field_spline.h>
+#include <CGAL/Tangent_vector_fields/Streamlines.h>
 #include <CGAL/Tangent_vector_fields/curvature_direction_field.h>
 #include <CGAL/Tangent_vector_fields/face_field_io.h>
+#include <CGAL/Tangent_vector_fields/field_export.h>
 #include <CGAL/Tangent_vector_fields/smoothest_n_field.h>
 
 #include <chrono>
@@ -102,6 +105,17 @@ int main(int argc, char** argv)
   const auto singular = TVF::smoothest_n_field(mesh, 4, smoothest);
   std::cout << "smoothest cross field: " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
             << " s, " << singular.size() << " singularities, indices sum to " << index_sum(singular) << "/4\n";
+  // Its hatching: evenly spaced streamlines of both families, stopping at the singularities.
+  TVF::Evenly_spaced_options even;
+  even.separation = 0.01; // of the bounding-box diagonal
+  const std::vector<TVF::Streamline> hatching = TVF::evenly_spaced_n_field_streamlines(mesh, 4, smoothest, even);
+  int into_singularities = 0;
+  for(const TVF::Streamline& s : hatching)
+    into_singularities += (s.backward_stop == TVF::Streamline_stop::singular_vertex) +
+                          (s.forward_stop == TVF::Streamline_stop::singular_vertex);
+  TVF::write_streamlines_obj(prefix + "_hatching.obj", hatching);
+  std::cout << "  hatching: " << hatching.size() << " streamlines, " << into_singularities
+            << " ends at singularities (" << prefix << "_hatching.obj)\n";
 
   // 2 and 3: the same six crosses, first-order and higher-order.
   std::vector<std::pair<Face_index, K::Vector_3>> crosses;

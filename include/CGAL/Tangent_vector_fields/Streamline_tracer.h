@@ -5,9 +5,10 @@
 #define CGAL_TANGENT_VECTOR_FIELDS_STREAMLINE_TRACER_H
 
 /// \file Streamline_tracer.h
-/// Streamlines of a piecewise-constant tangent field, traced exactly face by face
-/// on an `Intrinsic_mesh`; evenly spaced streamlines and short "fur" strokes.
-/// `Streamlines.h` offers the same on property maps of any `TriangleMesh`.
+/// Streamlines of a piecewise-constant tangent field -- a vector field or an n-direction
+/// field -- traced exactly face by face on an `Intrinsic_mesh`; evenly spaced streamlines
+/// and short "fur" strokes.  `Streamlines.h` offers the same on property maps of any
+/// `TriangleMesh`.
 
 #include <CGAL/Tangent_vector_fields/Intrinsic_mesh.h>
 
@@ -21,6 +22,8 @@
 namespace CGAL {
 namespace Tangent_vector_fields {
 
+class N_field_operators;
+
 /// Why one end of a streamline stopped.
 enum class Streamline_stop {
   none,             ///< not traced in this direction (e.g. only forward was asked for)
@@ -32,10 +35,11 @@ enum class Streamline_stop {
   maximum_segments, ///< reached the limit on the number of segments
   closed_loop,      ///< came back to its seed (forward direction only)
   too_close,        ///< came closer than the test distance to another streamline (evenly spaced seeding)
-  stalled           ///< many consecutive segments of negligible length (spiralling into a vertex)
+  stalled,          ///< many consecutive segments of negligible length (spiralling into a vertex)
+  singular_vertex   ///< reached a singular vertex of the field, or converged into one (see `Streamline_tracer`)
 };
 
-/// A short name such as "boundary" or "sink_edge".
+/// A short name such as "boundary" or "sink_edge" (the enumerator's name).
 const char* to_string(Streamline_stop stop);
 
 /// \brief A streamline: a polyline on the surface that follows the field.
@@ -52,6 +56,9 @@ struct Streamline
   std::vector<int> faces;
   /// Position of the seed in `points`.
   std::size_t seed_index = 0;
+  /// The vector of the seed's face the streamline leaves the seed along: `j` for the
+  /// face's first vector turned by `2 pi j / n` (0 for a vector field).
+  int branch = 0;
   /// Why the part before the seed stopped (traced against the field).
   Streamline_stop backward_stop = Streamline_stop::none;
   /// Why the part after the seed stopped.
@@ -83,6 +90,9 @@ struct Streamline_options
   int maximum_segments = 100000;
   bool forward = true;  ///< trace along the field from the seed
   bool backward = true; ///< trace against the field from the seed
+  /// Which of the n vectors of the seed's face to follow: the first one turned by
+  /// `2 pi branch / n`, `0 <= branch < n` (a vector field has only 0).
+  int branch = 0;
   /// A face whose vector is at most this times the largest face vector counts as zero.
   double zero_field_tolerance = 1e-9;
   /// Detect a loop closing at the seed: when the forward trace passes through the
@@ -106,7 +116,8 @@ struct Evenly_spaced_options
   int maximum_streamlines = 0;
   /// Seeds the order of the random candidate seeds.
   unsigned random_seed = 1;
-  /// Limits of each trace (`maximum_length` is per direction).
+  /// Limits of each trace (`maximum_length` is per direction; `branch` must be 0: every
+  /// family is traced).
   Streamline_options tracing;
 };
 
@@ -116,10 +127,16 @@ struct Fur_options
   /// Length of each stroke (traced forward from its root), in `length_unit`.
   double length = 0.02;
   Length_unit length_unit = Length_unit::bounding_box_diagonal;
-  /// Number of strokes; if 0, `density` times the total area.
+  /// Number of roots (one stroke per root for a vector field, see `branch`); if 0,
+  /// `density` times the total area.
   int number_of_strokes = 0;
-  /// Strokes per unit area (in the mesh's units squared), used when `number_of_strokes` is 0.
+  /// Roots per unit area (in the mesh's units squared), used when `number_of_strokes` is 0.
   double density = 0;
+  /// The strokes of each root: -1 (the default) one along each of the n vectors of its
+  /// face, the n-fold glyph of an n-field (two opposite strokes, a line, for a line field;
+  /// one stroke for a vector field); `0 <= branch < n` only along vector `branch` of the
+  /// face (numbered from the face's first vector, as `Streamline_options::branch`).
+  int branch = -1;
   /// Scale each stroke's length by the magnitude of the field at its root relative to
   /// the largest magnitude, so that the strokes show the strength of the field.
   bool scale_length_by_magnitude = false;
@@ -141,30 +158,75 @@ struct Fur_options
 /// mollification the layout is the face itself and every segment is parallel to the
 /// 3D face vector.
 ///
+/// **n-direction fields.**  An n-field has n vectors per face, at angles `2 pi j / n` from
+/// a first one (`N_field_operators`); a vector field is the case `n = 1`, and both are
+/// traced by the same walk.  A streamline follows one of them, its *branch* (chosen at the
+/// seed, `Streamline_options::branch`), and in each face it enters takes the vector
+/// closest in angle to the one it followed, carried across the shared edge (the rotation
+/// that unfolds the two faces into one plane) or, through a vertex, compared in 3D: the
+/// *matching* branch.  For `n = 1` the match is the face's only vector.  The backward part
+/// runs against the branch, so the whole polyline runs along the field; for even n the
+/// opposite vector is a branch too and both parts follow the same line.
+///
 /// **Stops.** A boundary edge; a face whose vector is (nearly) zero; a *sink edge*,
-/// where the vector of the face beyond the edge points back across it (the streamline
-/// would zig-zag on the edge forever); the length and segment limits; a closed loop
-/// (the forward trace comes back to its seed); many segments of negligible length.
+/// where the (matching) vector of the face beyond the edge points back across it (the
+/// streamline would zig-zag on the edge forever); the length and segment limits; a closed
+/// loop (the forward trace comes back to its seed on the same line); many segments of
+/// negligible length; a singular vertex.
+///
+/// **Singular vertices.**  The field is undefined at a vertex of non-zero index and turns
+/// by `2 pi k / n` around it, so no branch continues there.  A streamline stops
+/// (`Streamline_stop::singular_vertex`) when it reaches such a vertex, and also when it
+/// would stop by convergence -- a sink edge, a sink vertex, a stall -- at a point of a face
+/// that has a singular corner: in the piecewise-constant field, that is how a streamline
+/// runs into the singularity.  It is then ended at that corner (the nearest one) by a last
+/// segment inside the face, the only segment that does not follow the field (unless that
+/// segment would pass the length limit: the streamline then keeps its stop).  Streamlines
+/// passing through the one-ring without converging go on.  The singular vertices are those
+/// given to the constructor: `n_field_indices` at interior vertices for an n-field (the
+/// boundary stops streamlines anyway), none for a vector field unless given.
 ///
 /// **Vertices.**  When a segment ends within `1e-12` (barycentric) of a corner, the
 /// point is put on the vertex, and the trace continues in the incident face (other
-/// than the one it came from) whose vector points strictly into the face from the
-/// vertex, choosing the one closest in 3D direction to the incoming segment.  If no
+/// than the one it came from) whose (matching) vector points strictly into the face from
+/// the vertex, choosing the one closest in 3D direction to the incoming segment.  If no
 /// face qualifies the trace stops: with `boundary` on a boundary vertex (the field
 /// leaves the surface there), else with `sink_vertex`.  Two consecutive faces of the
-/// polyline share only that vertex when the trace passes through it.
+/// polyline share only that vertex when the trace passes through it.  A seed on a vertex
+/// starts in the incident face that its own face's vector leads into best (that face itself
+/// if its vector leaves the vertex into it).
 ///
 /// The mesh is shared, so the tracer may outlive the object it came from.
 class Streamline_tracer
 {
 public:
-  /// `field`: frame coordinates, `2 nf` (face `f` at rows `2f`, `2f+1`).
+  /// A vector field (`n = 1`, the default) or an n-field given by one of its n vectors per
+  /// face.
+  /// \param field frame coordinates, `2 nf` (face `f` at rows `2f`, `2f+1`): the vector of
+  ///        each face, or for an n-field any one of its n vectors; branch `j` is this vector
+  ///        turned by `2 pi j / n`.
+  /// \param n the number of vectors per face (1 vector field, 2 line field, 4 cross field...).
+  /// \param singular_vertices the vertices where streamlines stop (see above); none by default.
+  /// \throws Invalid_input if the size is wrong, an entry is not finite, `n < 1`, or a
+  ///         singular vertex does not exist.
+  Streamline_tracer(std::shared_ptr<const Intrinsic_mesh> mesh, const Eigen::VectorXd& field, int n = 1,
+                    const std::vector<int>& singular_vertices = std::vector<int>());
+  /// An n-field in the power representation of `operators` (`z_f = r e^{i n theta}`, `2 nf`):
+  /// branch `j` of face `f` is vector `j` of `operators.to_vectors(z, j)` (for `n = 1`, `z`
+  /// itself), and streamlines stop at the interior vertices of non-zero index
+  /// (`n_field_indices`).
   /// \throws Invalid_input if the size is wrong or an entry is not finite.
-  Streamline_tracer(std::shared_ptr<const Intrinsic_mesh> mesh, const Eigen::VectorXd& field);
+  Streamline_tracer(const N_field_operators& operators, const Eigen::VectorXd& z);
   ~Streamline_tracer();
   Streamline_tracer(Streamline_tracer&&) noexcept;
   Streamline_tracer& operator=(Streamline_tracer&&) noexcept;
 
+  /// The number of vectors per face (1 for a vector field).
+  int n() const;
+  /// The families of lines of `evenly_spaced`: `n / 2` for even n, `n` for odd n.
+  int number_of_families() const;
+  /// The vertices where streamlines stop, in increasing order.
+  const std::vector<int>& singular_vertices() const;
   const Intrinsic_mesh& mesh() const;
   /// Diagonal of the bounding box of the vertices that belong to faces.
   double bounding_box_diagonal() const;
@@ -175,8 +237,10 @@ public:
 
   /// Traces from a point of face `face` given by barycentric coordinates with respect
   /// to the face's corners in local order (`Intrinsic_mesh::face_vertices`); they are
-  /// clamped to be non-negative and normalised.
-  /// \throws Invalid_input for a face index out of range or non-finite coordinates.
+  /// clamped to be non-negative and normalised.  The streamline leaves the seed along
+  /// vector `options.branch` of the face.
+  /// \throws Invalid_input for a face index out of range, non-finite coordinates, or a
+  ///         branch outside `[0, n)`.
   Streamline trace(int face, const std::array<double, 3>& barycentric,
                    const Streamline_options& options = Streamline_options()) const;
   /// Traces from the 3D point `point`, projected onto face `face` (and clamped into it).
@@ -193,16 +257,42 @@ public:
   /// uniform grid; they approximate the geodesic ones well when the separation is
   /// small compared with the curvature radii.  The result is deterministic for a
   /// given `random_seed`.
+  ///
+  /// For an n-field every family of lines is drawn, each at the separation: `n / 2`
+  /// families for even n (a vector and its opposite are one line: two crossing families
+  /// for a cross field, one for a line field), `n` for odd n.  Each random point seeds one
+  /// streamline of each family (`Streamline::branch` in `[0, number_of_families())`), a seed
+  /// beside a streamline continues its family, and the separation is tested only between
+  /// streamlines of the same family, so that families cross.  Which family a sample belongs
+  /// to is told by its direction: another streamline's sample counts when their directions
+  /// are within `pi / n` of each other (up to sign for even n), half the angle between
+  /// families; the branch numbers cannot tell, since each face numbers its vectors from its
+  /// own first one and a streamline turning around a singularity changes family.
+  /// \throws Invalid_input for a separation that is not positive, a `test_ratio` outside
+  ///         `(0, 1]`, or `tracing.branch` other than 0.
   std::vector<Streamline> evenly_spaced(const Evenly_spaced_options& options = Evenly_spaced_options()) const;
 
-  /// Short strokes traced forward from random roots, uniformly distributed by area.
-  /// Strokes of zero length (roots in zero-field faces) are left out.
+  /// Short strokes traced forward from random roots, uniformly distributed by area: per
+  /// root one along each of the n vectors of its face, or one along the branch asked for
+  /// (`Fur_options::branch`), consecutive in the result.  Strokes of zero length (roots in
+  /// zero-field faces) are left out.
+  /// \throws Invalid_input for a length that is not positive, neither a count nor a
+  ///         density, or a branch outside `[-1, n)`.
   std::vector<Streamline> fur(const Fur_options& options) const;
 
 private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+namespace internal {
+
+/// The vertices where the streamlines of the n-field `z` (power representation) stop: its
+/// interior vertices of non-zero index (`n_field_indices`).
+/// \throws Invalid_input if `z` has the wrong size or non-finite entries.
+std::vector<int> n_field_stop_vertices(const N_field_operators& operators, const Eigen::VectorXd& z);
+
+} // namespace internal
 
 } // namespace Tangent_vector_fields
 } // namespace CGAL

@@ -5,9 +5,10 @@
 #define CGAL_TANGENT_VECTOR_FIELDS_STREAMLINES_H
 
 /// \file Streamlines.h
-/// Streamlines of a face field of any `TriangleMesh`: one streamline from a seed,
-/// evenly spaced streamlines, and fur strokes.  Thin wrappers over
-/// `Streamline_tracer` (which works on the `Intrinsic_mesh`).
+/// Streamlines of a face field of any `TriangleMesh` -- a vector field, or an n-direction
+/// field given by any one of its n vectors per face: one streamline from a seed, evenly
+/// spaced streamlines (for an n-field, of every family: the hatching), and fur strokes.
+/// Thin wrappers over `Streamline_tracer` (which works on the `Intrinsic_mesh`).
 ///
 /// The options are plain structs (`Streamline_options`, `Evenly_spaced_options`,
 /// `Fur_options`) rather than named parameters: they are shared with the compiled
@@ -17,12 +18,15 @@
 /// options (`use_intrinsic_mollification`, ...).  Face indices in the results are
 /// those of the face index map.
 
+#include <CGAL/Tangent_vector_fields/N_field_operators.h>
 #include <CGAL/Tangent_vector_fields/Streamline_tracer.h>
 #include <CGAL/Tangent_vector_fields/internal/Mesh_adapter.h>
 
 #include <CGAL/boost/graph/iterator.h>
 
 #include <map>
+#include <memory>
+#include <type_traits>
 
 namespace CGAL {
 namespace Tangent_vector_fields {
@@ -38,11 +42,27 @@ public:
   typedef internal::Mesh_adapter<TriangleMesh> Adapter;
   typedef typename Adapter::face_descriptor face_descriptor;
 
+  /// A vector field.
   /// \param field a face map with `Vector_3` values (projected onto the faces).
-  template <class FaceVectorMap, class NamedParameters = parameters::Default_named_parameters>
+  // (Not a candidate for an integer second argument: that is the n-field constructor.)
+  template <class FaceVectorMap, class NamedParameters = parameters::Default_named_parameters,
+            typename std::enable_if<!std::is_arithmetic<FaceVectorMap>::value, int>::type = 0>
   Mesh_streamline_tracer(const TriangleMesh& mesh, const FaceVectorMap& field,
                          const NamedParameters& np = parameters::default_values())
     : adapter_(mesh, np), tracer_(adapter_.intrinsic_mesh(), adapter_.read_field(field))
+  {}
+
+  /// An n-direction field, as the rest of the n-field API takes it: `field` holds any one of
+  /// the n vectors of each face (projected onto the face), the others are it turned by
+  /// `2 pi j / n` about the face's normal, and branch `j` (`Streamline_options::branch`,
+  /// `Fur_options::branch`) is the map's vector turned by `2 pi j / n`.  Streamlines stop at
+  /// the interior vertices where the field has a non-zero index (`n_field_singularities`).
+  /// \param n the number of vectors per face (1 vector field, 2 line field, 4 cross field...)
+  /// \throws Invalid_input if `n < 1` or the field has non-finite entries.
+  template <class FaceVectorMap, class NamedParameters = parameters::Default_named_parameters>
+  Mesh_streamline_tracer(const TriangleMesh& mesh, int n, const FaceVectorMap& field,
+                         const NamedParameters& np = parameters::default_values())
+    : adapter_(mesh, np), tracer_(n_field_tracer(adapter_, n, adapter_.read_field(field)))
   {}
 
   const Streamline_tracer& tracer() const { return tracer_; }
@@ -66,6 +86,13 @@ public:
   std::vector<Streamline> fur(const Fur_options& options) const { return tracer_.fur(options); }
 
 private:
+  static Streamline_tracer n_field_tracer(const Adapter& adapter, int n, const Eigen::VectorXd& vectors)
+  {
+    const N_field_operators operators(std::make_shared<const Operator_matrices>(adapter.intrinsic_mesh()), n);
+    return Streamline_tracer(adapter.intrinsic_mesh(), vectors, n,
+                             internal::n_field_stop_vertices(operators, operators.from_vectors(vectors)));
+  }
+
   int face_index(face_descriptor f) const
   {
     const auto& faces = adapter_.faces();
@@ -112,6 +139,49 @@ std::vector<Streamline> fur_strokes(const TriangleMesh& mesh, const FaceVectorMa
                                     const NamedParameters& np = parameters::default_values())
 {
   return Mesh_streamline_tracer<TriangleMesh>(mesh, field, np).fur(options);
+}
+
+/// \brief The streamline of the n-field `field` through the point `seed` of face `f`, along
+/// vector `options.branch` of `f` (the map's vector turned by `2 pi branch / n`); it stops at
+/// the field's singular vertices (see `Mesh_streamline_tracer` and `Streamline_tracer`).
+///
+/// \param n the number of vectors per face (n >= 1)
+/// \param field a face map with `Vector_3` values: any one of the n vectors per face.
+/// \param options limits, directions, tolerances and the branch (`Streamline_options`).
+/// \param np the options of the mesh (`vertex_point_map`, index maps, mollification).
+template <class TriangleMesh, class FaceVectorMap, class Point_3,
+          class NamedParameters = parameters::Default_named_parameters>
+Streamline trace_n_field_streamline(const TriangleMesh& mesh, int n, const FaceVectorMap& field,
+                                    typename boost::graph_traits<TriangleMesh>::face_descriptor f, const Point_3& seed,
+                                    const Streamline_options& options = Streamline_options(),
+                                    const NamedParameters& np = parameters::default_values())
+{
+  return Mesh_streamline_tracer<TriangleMesh>(mesh, n, field, np).trace(f, seed, options);
+}
+
+/// \brief Evenly spaced streamlines of every family of the n-field `field` -- for a cross
+/// field, two families crossing at right angles -- each family at the separation (see
+/// `Streamline_tracer::evenly_spaced`).
+///
+/// \param field a face map with `Vector_3` values: any one of the n vectors per face.
+template <class TriangleMesh, class FaceVectorMap, class NamedParameters = parameters::Default_named_parameters>
+std::vector<Streamline> evenly_spaced_n_field_streamlines(const TriangleMesh& mesh, int n, const FaceVectorMap& field,
+                                                          const Evenly_spaced_options& options = Evenly_spaced_options(),
+                                                          const NamedParameters& np = parameters::default_values())
+{
+  return Mesh_streamline_tracer<TriangleMesh>(mesh, n, field, np).evenly_spaced(options);
+}
+
+/// \brief Fur of the n-field `field`: from each random root a stroke along each of the n
+/// vectors of its face, or along the branch `options.branch` (see `Streamline_tracer::fur`).
+///
+/// \param field a face map with `Vector_3` values: any one of the n vectors per face.
+template <class TriangleMesh, class FaceVectorMap, class NamedParameters = parameters::Default_named_parameters>
+std::vector<Streamline> n_field_fur_strokes(const TriangleMesh& mesh, int n, const FaceVectorMap& field,
+                                            const Fur_options& options,
+                                            const NamedParameters& np = parameters::default_values())
+{
+  return Mesh_streamline_tracer<TriangleMesh>(mesh, n, field, np).fur(options);
 }
 
 } // namespace Tangent_vector_fields
