@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // What Cairo draws over the surface: streamlines and fur strokes (hidden where the surface
-// covers them), arrows on a screen grid, the colour bar and text.
+// covers them), arrows and n-fold glyphs on a screen grid, the colour bar and text.
 
 #include "field_renderer_impl.h"
 
@@ -78,10 +78,52 @@ void Field_renderer::Impl::draw_lines(cairo_t* cr, const Frame_buffers& fb, cons
   }
 }
 
-void Field_renderer::Impl::draw_arrows(cairo_t* cr, const Frame_buffers& fb, const Arrow_set& set) const
+// The grid cells' centres (output pixels) where the surface is seen, with its face and point there.
+std::vector<Glyph_site> Field_renderer::Impl::glyph_sites(const Frame_buffers& fb, double spacing) const
+{
+  const Intrinsic_mesh& M = *mesh;
+  std::vector<Glyph_site> sites;
+  for(double y = spacing / 2; y < options.height; y += spacing)
+    for(double x = spacing / 2; x < options.width - legend_width(); x += spacing)
+    {
+      const int sx = static_cast<int>(x * ss), sy = static_cast<int>(y * ss);
+      const std::size_t i = static_cast<std::size_t>(sy) * fb.w + sx;
+      const int f = fb.face[i];
+      if(f < 0) continue;
+      const std::array<double, 3> w = barycentric(fb, i);
+      const auto& t = M.face_vertices(f);
+      V3 p{{0, 0, 0}};
+      for(int k = 0; k < 3; ++k) p = add(p, scaled(M.position(t[k]), w[k]));
+      sites.push_back({x, y, f, p});
+    }
+  return sites;
+}
+
+// The screen direction of the unit tangent vector (a, b) (frame coordinates of face f) at
+// the surface point p, and its foreshortening; false if it points along the view.
+bool Field_renderer::Impl::screen_direction(int f, const V3& p, double a, double b, Screen_direction& d) const
+{
+  const Intrinsic_mesh& M = *mesh;
+  const V3 v = M.from_frame(f, a, b);
+  const double h = 1e-3 * M.mean_edge_length();
+  const auto pa = to_samples(p);
+  const auto pb = to_samples(add(p, scaled(v, h)));
+  const double dx = (pb[0] - pa[0]) / ss, dy = (pb[1] - pa[1]) / ss;
+  const double screen = std::hypot(dx, dy);
+  if(!(screen > 0)) return false;
+  d.foreshortening = std::min(1., screen / (h * scale));
+  d.ux = dx / screen;
+  d.uy = dy / screen;
+  return true;
+}
+
+// Arrows (symmetry 1) and n-fold glyphs share the grid, the scale and the screen
+// directions; they differ only in the marks: a shaft with a head, or n spokes.
+void Field_renderer::Impl::draw_glyphs(cairo_t* cr, const Frame_buffers& fb, const Arrow_set& set) const
 {
   const Intrinsic_mesh& M = *mesh;
   const Arrow_style& st = set.style;
+  const int n = st.symmetry;
   // Lengths relative to the 95th percentile of the magnitudes (longer arrows are
   // clamped): a few very strong faces would otherwise shrink all other arrows.
   std::vector<double> magnitudes(M.number_of_faces());
@@ -94,32 +136,23 @@ void Field_renderer::Impl::draw_arrows(cairo_t* cr, const Frame_buffers& fb, con
   const double spacing = std::max(st.spacing, 4.);
   cairo_new_path(cr);
   std::vector<std::array<double, 6>> heads;
-  for(double y = spacing / 2; y < options.height; y += spacing)
-    for(double x = spacing / 2; x < options.width - legend_width(); x += spacing)
+  for(const Glyph_site& site : glyph_sites(fb, spacing))
+  {
+    const int f = site.face;
+    const double x = site.x, y = site.y;
+    const double magnitude = std::hypot(set.field[2 * f], set.field[2 * f + 1]);
+    if(!(magnitude > 0)) continue;
+    // The whole length of a mark along a direction with this foreshortening.
+    const auto length_along = [&](double foreshortening) {
+      return 0.85 * spacing * foreshortening * (st.scale_by_magnitude ? std::min(1., magnitude / largest) : 1);
+    };
+    Screen_direction d;
+    if(n == 1)
     {
-      const int sx = static_cast<int>(x * ss), sy = static_cast<int>(y * ss);
-      const std::size_t i = static_cast<std::size_t>(sy) * fb.w + sx;
-      const int f = fb.face[i];
-      if(f < 0) continue;
-      const std::array<double, 3> w = barycentric(fb, i);
-      const auto& t = M.face_vertices(f);
-      V3 p{{0, 0, 0}};
-      for(int k = 0; k < 3; ++k) p = add(p, scaled(M.position(t[k]), w[k]));
-      const double magnitude = std::hypot(set.field[2 * f], set.field[2 * f + 1]);
-      if(!(magnitude > 0)) continue;
-      const V3 v = M.from_frame(f, set.field[2 * f] / magnitude, set.field[2 * f + 1] / magnitude);
-      // Screen direction and foreshortening of the unit vector v.
-      const double h = 1e-3 * M.mean_edge_length();
-      const auto a = to_samples(p);
-      const auto b = to_samples(add(p, scaled(v, h)));
-      const double dx = (b[0] - a[0]) / ss, dy = (b[1] - a[1]) / ss;
-      const double screen = std::hypot(dx, dy);
-      if(!(screen > 0)) continue;
-      const double foreshortening = std::min(1., screen / (h * scale));
-      const double length =
-          0.85 * spacing * foreshortening * (st.scale_by_magnitude ? std::min(1., magnitude / largest) : 1);
+      if(!screen_direction(f, site.point, set.field[2 * f] / magnitude, set.field[2 * f + 1] / magnitude, d)) continue;
+      const double length = length_along(d.foreshortening);
       if(length < 1.5) continue;
-      const double ux = dx / screen, uy = dy / screen;
+      const double ux = d.ux, uy = d.uy;
       const double x0 = x - ux * length / 2, y0 = y - uy * length / 2;
       const double x1 = x + ux * length / 2, y1 = y + uy * length / 2;
       const double head = std::min(0.35 * length, 3 + 2.5 * st.width);
@@ -127,7 +160,23 @@ void Field_renderer::Impl::draw_arrows(cairo_t* cr, const Frame_buffers& fb, con
       cairo_line_to(cr, x1 - ux * head * 0.8, y1 - uy * head * 0.8);
       heads.push_back({x1, y1, x1 - ux * head - uy * head * 0.45, y1 - uy * head + ux * head * 0.45,
                        x1 - ux * head + uy * head * 0.45, y1 - uy * head - ux * head * 0.45});
+      continue;
     }
+    // The spokes start from the vector at an angle in [-pi/n, pi/n], so the glyph is the
+    // same whichever of the n vectors the field holds.
+    const double first = std::remainder(std::atan2(set.field[2 * f + 1], set.field[2 * f]), 2 * M_PI / n);
+    for(int j = 0; j < n; ++j)
+    {
+      const double angle = first + 2 * M_PI * j / n;
+      if(!screen_direction(f, site.point, std::cos(angle), std::sin(angle), d)) continue;
+      const double length = length_along(d.foreshortening);
+      if(length < 1.5) continue;
+      // A spoke is half an arrow's length: the two spokes of a line field make a segment
+      // as long as the arrow of the same vector, centred in the cell like it.
+      cairo_move_to(cr, x, y);
+      cairo_line_to(cr, x + d.ux * length / 2, y + d.uy * length / 2);
+    }
+  }
   set_colour(cr, st.colour, st.opacity);
   cairo_set_line_width(cr, st.width);
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);

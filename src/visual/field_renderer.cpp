@@ -125,7 +125,7 @@ void Field_renderer::Impl::compose(cairo_t* cr) const
   cairo_paint(cr);
   cairo_surface_destroy(image);
   for(const Line_set& set : line_sets) draw_lines(cr, fb, set);
-  for(const Arrow_set& set : arrow_sets) draw_arrows(cr, fb, set);
+  for(const Arrow_set& set : arrow_sets) draw_glyphs(cr, fb, set);
   if(has_legend()) draw_legend(cr);
   if(!options.title.empty())
   {
@@ -186,7 +186,15 @@ void Field_renderer::add_arrows(const Eigen::VectorXd& field, const Arrow_style&
   if(field.size() != 2 * static_cast<Eigen::Index>(impl_->mesh->number_of_faces()))
     throw Invalid_input("renderer: the field needs 2 frame coordinates per face");
   if(!field.allFinite()) throw Invalid_input("renderer: the field has non-finite entries");
+  if(style.symmetry < 1)
+    throw Invalid_input("renderer: the symmetry of glyphs must be at least 1, not " + std::to_string(style.symmetry));
   impl_->arrow_sets.push_back({field, style});
+}
+
+void Field_renderer::add_glyphs(const Eigen::VectorXd& vectors, int n, Arrow_style style)
+{
+  style.symmetry = n;
+  add_arrows(vectors, style);
 }
 
 void Field_renderer::clear_overlays()

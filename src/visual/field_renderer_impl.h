@@ -4,7 +4,7 @@
 // The renderer's state and its parts (private to src/visual): the camera, the z-buffer and
 // the overlays to draw.  field_renderer.cpp holds the public class, the colour maps and the
 // composition of a picture; field_raster.cpp the camera, the rasteriser, the shading and the
-// visibility test; field_overlays.cpp what Cairo draws on top (lines, arrows, legend, text).
+// visibility test; field_overlays.cpp what Cairo draws on top (lines, arrows and glyphs, legend, text).
 
 #ifndef CGAL_TANGENT_VECTOR_FIELDS_SRC_VISUAL_FIELD_RENDERER_IMPL_H
 #define CGAL_TANGENT_VECTOR_FIELDS_SRC_VISUAL_FIELD_RENDERER_IMPL_H
@@ -81,6 +81,22 @@ struct Arrow_set
   Arrow_style style;
 };
 
+// A cell of the arrows' screen grid where the surface is seen: its centre (output pixels),
+// the face and the surface point there.
+struct Glyph_site
+{
+  double x, y;
+  int face;
+  V3 point;
+};
+
+// A tangent direction on the screen: unit direction (output pixels, y down) and
+// foreshortening (1 parallel to the screen, towards 0 along the view).
+struct Screen_direction
+{
+  double ux = 0, uy = 0, foreshortening = 0;
+};
+
 inline void set_colour(cairo_t* cr, const Colour& c, double alpha) { cairo_set_source_rgba(cr, c.r, c.g, c.b, alpha); }
 
 } // namespace render
@@ -93,6 +109,8 @@ struct Field_renderer::Impl
   typedef internal::render::Frame_buffers Frame_buffers;
   typedef internal::render::Line_set Line_set;
   typedef internal::render::Arrow_set Arrow_set;
+  typedef internal::render::Glyph_site Glyph_site;
+  typedef internal::render::Screen_direction Screen_direction;
 
   std::shared_ptr<const Intrinsic_mesh> mesh;
   Render_options options;
@@ -132,7 +150,9 @@ struct Field_renderer::Impl
 
   // field_overlays.cpp
   void draw_lines(cairo_t* cr, const Frame_buffers& fb, const Line_set& set) const;
-  void draw_arrows(cairo_t* cr, const Frame_buffers& fb, const Arrow_set& set) const;
+  std::vector<Glyph_site> glyph_sites(const Frame_buffers& fb, double spacing) const;
+  bool screen_direction(int f, const V3& p, double a, double b, Screen_direction& d) const;
+  void draw_glyphs(cairo_t* cr, const Frame_buffers& fb, const Arrow_set& set) const;
   void draw_text(cairo_t* cr, const std::string& text, double x, double y, double size, double align) const;
   Colour text_colour() const;
   void draw_legend(cairo_t* cr) const;

@@ -7,7 +7,8 @@
 /// \file Field_renderer.h
 /// Pictures of a mesh and its fields, drawn with Cairo into PNG and SVG files: a
 /// shaded surface, coloured by a scalar quantity with a colour bar, with
-/// streamlines, fur strokes or arrows on top, hidden where the surface covers them.
+/// streamlines, fur strokes, arrows or the glyphs of n-direction fields on top, hidden
+/// where the surface covers them.
 ///
 /// `Field_renderer` works on an `Intrinsic_mesh` and frame coordinates;
 /// `Field_picture.h` offers the same on property maps of any `TriangleMesh`.
@@ -118,7 +119,13 @@ struct Line_style
   bool taper = false;
 };
 
-/// Style of arrows: one per cell of a screen grid, at the surface point seen there.
+/// \brief Style of arrows and n-fold glyphs: one per cell of a screen grid, at the surface
+/// point seen there.
+///
+/// With `symmetry` n >= 2 the field is an n-direction field: each glyph shows its n vectors
+/// as n spokes from the cell centre, without heads (n = 2 a segment through the centre,
+/// n = 3 a three-armed star, n = 4 a cross), each spoke half as long as the arrow of that
+/// vector would be.  The glyph is the same whichever of the n vectors the field holds.
 struct Arrow_style
 {
   Colour colour{0.08, 0.08, 0.08};
@@ -129,6 +136,8 @@ struct Arrow_style
   /// Arrow length proportional to the magnitude, else constant.  An arrow fills its
   /// cell at the 95th percentile of the face magnitudes; longer ones are clamped.
   bool scale_by_magnitude = true;
+  /// n of an n-direction field: 1 draws arrows, n >= 2 glyphs of n spokes.
+  int symmetry = 1;
 };
 
 /// \brief Renders a mesh, a scalar quantity and fields into PNG or SVG pictures.
@@ -164,9 +173,15 @@ public:
 
   /// Adds streamlines (or fur strokes) to draw over the surface.
   void add_streamlines(std::vector<Streamline> lines, const Line_style& style = Line_style());
-  /// Adds arrows of a field given by its frame coordinates (`2 nf`).
+  /// Adds arrows of a field given by its frame coordinates (`2 nf`), or the glyphs of an
+  /// n-direction field if `style.symmetry` is n >= 2 (then any one of its n vectors per face).
+  /// \throws Invalid_input for a wrong size, non-finite entries or a symmetry below 1.
   void add_arrows(const Eigen::VectorXd& field, const Arrow_style& style = Arrow_style());
-  /// Removes all streamlines and arrows.
+  /// Adds the glyphs of an n-direction field: `add_arrows` with `style.symmetry = n`.
+  /// `vectors`: any one of the n vectors of each face, in frame coordinates (`2 nf`), such as
+  /// `N_field_operators::to_vectors(z)`.
+  void add_glyphs(const Eigen::VectorXd& vectors, int n, Arrow_style style = Arrow_style());
+  /// Removes all streamlines, arrows and glyphs.
   void clear_overlays();
 
   /// \throws Invalid_input if the file cannot be written.
