@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // What Cairo draws over the surface: streamlines and fur strokes (hidden where the surface
-// covers them), arrows and n-fold glyphs on a screen grid, the colour bar and text.
+// covers them), arrows and n-fold glyphs on a screen grid, the marks of singular vertices,
+// the colour bar and text.
 
 #include "field_renderer_impl.h"
 
@@ -191,14 +192,61 @@ void Field_renderer::Impl::draw_glyphs(cairo_t* cr, const Frame_buffers& fb, con
   cairo_fill(cr);
 }
 
-void Field_renderer::Impl::draw_text(cairo_t* cr, const std::string& text, double x, double y, double size, double align) const
+void Field_renderer::Impl::draw_singularities(cairo_t* cr, const Frame_buffers& fb, const Singularity_set& set) const
+{
+  const Singularity_style& st = set.style;
+  const double font = std::max(10., 2.4 * st.radius);
+  for(const auto& mark : set.marks)
+  {
+    const int v = mark[0], k = mark[1], f = mark[2];
+    const auto q = to_samples(mesh->position(v));
+    if(!visible(fb, q[0], q[1], q[2], f, depth_tolerance(f, q[2]))) continue;
+    const double x = q[0] / ss, y = q[1] / ss;
+    const double r = st.radius * std::sqrt(std::abs(k)); // area proportional to |k|
+    const Colour& c = k > 0 ? st.positive : st.negative;
+    cairo_new_path(cr);
+    cairo_arc(cr, x, y, r, 0, 2 * M_PI);
+    set_colour(cr, c, st.opacity);
+    if(st.outline_width > 0)
+    {
+      cairo_fill_preserve(cr);
+      set_colour(cr, st.outline, st.opacity);
+      cairo_set_line_width(cr, st.outline_width);
+      cairo_stroke(cr);
+    }
+    else
+      cairo_fill(cr);
+    if(!st.labels) continue;
+    std::string label = (k > 0 ? "+" : "") + std::to_string(k);
+    if(set.n > 1) label += "/" + std::to_string(set.n);
+    set_colour(cr, c, st.opacity);
+    draw_text(cr, label, x + r + 0.25 * font, y + 0.35 * font, font, 0, &st.outline, 2 * std::max(st.outline_width, 1.));
+  }
+}
+
+// With a halo: the text outlined in that colour first, so that it reads on any surface.
+void Field_renderer::Impl::draw_text(cairo_t* cr, const std::string& text, double x, double y, double size, double align,
+                                     const Colour* halo, double halo_width) const
 {
   cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
   cairo_set_font_size(cr, size);
   cairo_text_extents_t e;
   cairo_text_extents(cr, text.c_str(), &e);
   cairo_move_to(cr, x - align * (e.width + e.x_bearing), y);
-  cairo_show_text(cr, text.c_str());
+  if(!halo)
+  {
+    cairo_show_text(cr, text.c_str());
+    return;
+  }
+  cairo_pattern_t* fill = cairo_pattern_reference(cairo_get_source(cr));
+  cairo_text_path(cr, text.c_str());
+  set_colour(cr, *halo, 1);
+  cairo_set_line_width(cr, halo_width);
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  cairo_stroke_preserve(cr);
+  cairo_set_source(cr, fill);
+  cairo_fill(cr);
+  cairo_pattern_destroy(fill);
 }
 
 Colour Field_renderer::Impl::text_colour() const

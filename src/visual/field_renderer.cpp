@@ -126,6 +126,7 @@ void Field_renderer::Impl::compose(cairo_t* cr) const
   cairo_surface_destroy(image);
   for(const Line_set& set : line_sets) draw_lines(cr, fb, set);
   for(const Arrow_set& set : arrow_sets) draw_glyphs(cr, fb, set);
+  for(const Singularity_set& set : singularity_sets) draw_singularities(cr, fb, set);
   if(has_legend()) draw_legend(cr);
   if(!options.title.empty())
   {
@@ -197,10 +198,37 @@ void Field_renderer::add_glyphs(const Eigen::VectorXd& vectors, int n, Arrow_sty
   add_arrows(vectors, style);
 }
 
+void Field_renderer::add_singularities(const std::vector<std::pair<int, int>>& vertex_k, int n,
+                                       const Singularity_style& style)
+{
+  const Intrinsic_mesh& M = *impl_->mesh;
+  if(n < 1) throw Invalid_input("renderer: the symmetry of singularities must be at least 1, not " + std::to_string(n));
+  if(!(style.radius > 0) || !std::isfinite(style.radius))
+    throw Invalid_input("renderer: the radius of singularity marks must be positive");
+  // A face around each vertex: the visibility test takes the samples of the faces around it.
+  std::vector<int> face_of(M.number_of_vertices(), -1);
+  for(int f = M.number_of_faces() - 1; f >= 0; --f)
+    for(int v : M.face_vertices(f)) face_of[v] = f;
+  Singularity_set set;
+  set.n = n;
+  set.style = style;
+  for(const auto& vk : vertex_k)
+  {
+    const int v = vk.first;
+    if(v < 0 || v >= M.number_of_vertices())
+      throw Invalid_input("renderer: singular vertex " + std::to_string(v) + " is not a vertex of the mesh (0 to " +
+                          std::to_string(M.number_of_vertices() - 1) + ")");
+    if(face_of[v] < 0) throw Invalid_input("renderer: singular vertex " + std::to_string(v) + " lies in no face");
+    if(vk.second != 0) set.marks.push_back({v, vk.second, face_of[v]});
+  }
+  impl_->singularity_sets.push_back(std::move(set));
+}
+
 void Field_renderer::clear_overlays()
 {
   impl_->line_sets.clear();
   impl_->arrow_sets.clear();
+  impl_->singularity_sets.clear();
 }
 
 void Field_renderer::write_png(const std::string& filename) const

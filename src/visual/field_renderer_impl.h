@@ -4,7 +4,8 @@
 // The renderer's state and its parts (private to src/visual): the camera, the z-buffer and
 // the overlays to draw.  field_renderer.cpp holds the public class, the colour maps and the
 // composition of a picture; field_raster.cpp the camera, the rasteriser, the shading and the
-// visibility test; field_overlays.cpp what Cairo draws on top (lines, arrows and glyphs, legend, text).
+// visibility test; field_overlays.cpp what Cairo draws on top (lines, arrows and glyphs, singularities, legend,
+// text).
 
 #ifndef CGAL_TANGENT_VECTOR_FIELDS_SRC_VISUAL_FIELD_RENDERER_IMPL_H
 #define CGAL_TANGENT_VECTOR_FIELDS_SRC_VISUAL_FIELD_RENDERER_IMPL_H
@@ -81,6 +82,14 @@ struct Arrow_set
   Arrow_style style;
 };
 
+// Marks of singular vertices: (vertex, k, a face around the vertex) each.
+struct Singularity_set
+{
+  std::vector<std::array<int, 3>> marks;
+  int n = 1;
+  Singularity_style style;
+};
+
 // A cell of the arrows' screen grid where the surface is seen: its centre (output pixels),
 // the face and the surface point there.
 struct Glyph_site
@@ -109,6 +118,7 @@ struct Field_renderer::Impl
   typedef internal::render::Frame_buffers Frame_buffers;
   typedef internal::render::Line_set Line_set;
   typedef internal::render::Arrow_set Arrow_set;
+  typedef internal::render::Singularity_set Singularity_set;
   typedef internal::render::Glyph_site Glyph_site;
   typedef internal::render::Screen_direction Screen_direction;
 
@@ -120,6 +130,7 @@ struct Field_renderer::Impl
   double range_min = std::numeric_limits<double>::quiet_NaN(), range_max = range_min;
   std::vector<Line_set> line_sets;
   std::vector<Arrow_set> arrow_sets;
+  std::vector<Singularity_set> singularity_sets;
   std::vector<V3> vertex_normals;
 
   // Derived at render time.
@@ -153,7 +164,9 @@ struct Field_renderer::Impl
   std::vector<Glyph_site> glyph_sites(const Frame_buffers& fb, double spacing) const;
   bool screen_direction(int f, const V3& p, double a, double b, Screen_direction& d) const;
   void draw_glyphs(cairo_t* cr, const Frame_buffers& fb, const Arrow_set& set) const;
-  void draw_text(cairo_t* cr, const std::string& text, double x, double y, double size, double align) const;
+  void draw_singularities(cairo_t* cr, const Frame_buffers& fb, const Singularity_set& set) const;
+  void draw_text(cairo_t* cr, const std::string& text, double x, double y, double size, double align,
+                 const Colour* halo = nullptr, double halo_width = 0) const;
   Colour text_colour() const;
   void draw_legend(cairo_t* cr) const;
 };

@@ -2,18 +2,23 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 
 // Pictures of n-direction fields: n-fold glyphs (arrows are the glyphs of symmetry 1, a glyph
-// has the shape of its n and does not depend on which of the n vectors it is given).
+// has the shape of its n and does not depend on which of the n vectors it is given), and the
+// singular vertices marked where the surface shows them.
 
 #include "picture_test_support.h"
 #include "test_meshes.h"
 
 #include <CGAL/Tangent_vector_fields/Discrete_operators.h>
 #include <CGAL/Tangent_vector_fields/Field_renderer.h>
+#include <CGAL/Tangent_vector_fields/N_field_singularities.h>
+#include <CGAL/Tangent_vector_fields/Smoothest_n_field_solver.h>
 #include <CGAL/Tangent_vector_fields/errors.h>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <random>
 #include <string>
 
@@ -83,6 +88,35 @@ struct Torus_scene
 };
 
 bool dark(std::uint32_t p) { return Image::red(p) < 80 && Image::green(p) < 80 && Image::blue(p) < 80; }
+bool reddish(std::uint32_t p) { return Image::red(p) > 180 && Image::green(p) < 80 && Image::blue(p) < 80; }
+bool bluish(std::uint32_t p) { return Image::blue(p) > 180 && Image::red(p) < 80 && Image::green(p) < 120; }
+
+// Where `front_view` (legend off) shows the point p: the bounding box of the mesh's vertices
+// fills the image up to the 4% margin, its centre at the image centre.
+std::array<double, 2> front_view_pixel(const TVF::Intrinsic_mesh& mesh, const std::array<double, 3>& p, int width,
+                                       int height)
+{
+  double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+  for(int v = 0; v < mesh.number_of_vertices(); ++v)
+  {
+    x0 = std::min(x0, mesh.position(v)[0]);
+    x1 = std::max(x1, mesh.position(v)[0]);
+    y0 = std::min(y0, mesh.position(v)[1]);
+    y1 = std::max(y1, mesh.position(v)[1]);
+  }
+  const double scale = std::min(width * 0.92 / (x1 - x0), height * 0.92 / (y1 - y0));
+  return {width / 2. + scale * (p[0] - (x0 + x1) / 2), height / 2. - scale * (p[1] - (y0 + y1) / 2)};
+}
+
+// Pixels of `b` that differ from `a` within `radius` of (x, y).
+int differences_near(const Image& a, const Image& b, double x, double y, double radius)
+{
+  int n = 0;
+  for(int py = std::max(0, static_cast<int>(y - radius)); py <= std::min(a.height - 1, static_cast<int>(y + radius)); ++py)
+    for(int px = std::max(0, static_cast<int>(x - radius)); px <= std::min(a.width - 1, static_cast<int>(x + radius)); ++px)
+      if(std::hypot(px + 0.5 - x, py + 0.5 - y) <= radius) n += (a.at(px, py) & 0xffffff) != (b.at(px, py) & 0xffffff);
+  return n;
+}
 
 } // namespace
 
@@ -175,5 +209,155 @@ TEST(NFieldPictures, GlyphsRefuseBadInput)
   negative.symmetry = -2;
   EXPECT_NE(refusal([&] { renderer.add_arrows(scene.x, negative); }).find("at least 1, not -2"), std::string::npos);
   EXPECT_NE(refusal([&] { renderer.add_glyphs(scene.x.head(10), 4); }).find("2 frame coordinates per face"),
+            std::string::npos);
+}
+
+TEST(NFieldPictures, SingularitiesOfTheSmoothestCrossFieldAreMarkedWhereTheSphereShowsThem)
+{
+  Mesh sphere = make_icosphere(3);
+  TVF::Discrete_operators<Mesh> ops(sphere);
+  const TVF::N_field_operators nops(ops.shared_matrices(), 4);
+  const Eigen::VectorXd z = TVF::smoothest_n_field(nops);
+  std::vector<std::pair<int, int>> singular;
+  for(const TVF::N_field_singularity& s : TVF::n_field_singularities(nops, z)) singular.emplace_back(s.vertex, s.index);
+  ASSERT_EQ(singular.size(), 8u); // eight +1/4: Poincare-Hopf with 4 chi = 8
+  const int size = 300;
+  TVF::Field_renderer plain(ops.shared_matrices()->shared_mesh(), front_view(size, size));
+  TVF::Field_renderer marked(ops.shared_matrices()->shared_mesh(), front_view(size, size));
+  TVF::Singularity_style style;
+  style.radius = 5;
+  marked.add_singularities(singular, 4, style);
+  const Image a = picture_of(plain, "sphere_plain"), b = picture_of(marked, "sphere_singularities");
+  const TVF::Intrinsic_mesh& M = ops.intrinsic_mesh();
+  int front = 0, back = 0;
+  std::vector<std::array<double, 2>> front_marks;
+  for(const auto& s : singular)
+  {
+    const auto& p = M.position(s.first);
+    if(p[2] > 0.3) front_marks.push_back(front_view_pixel(M, p, size, size));
+  }
+  for(const auto& s : singular)
+  {
+    const auto& p = M.position(s.first);
+    const auto q = front_view_pixel(M, p, size, size);
+    if(p[2] > 0.3)
+    {
+      // The disc is centred there: red at the vertex and two pixels around it, with its
+      // white ring about 5.5 pixels out, the surface beyond.
+      ++front;
+      for(int dx : {-2, 0, 2})
+        for(int dy : {-2, 0, 2})
+          EXPECT_TRUE(reddish(b.at(static_cast<int>(q[0]) + dx, static_cast<int>(q[1]) + dy))) << "vertex " << s.first;
+      EXPECT_GT(differences_near(a, b, q[0], q[1], 5), 60) << "vertex " << s.first;
+    }
+    else if(p[2] < -0.3)
+    {
+      // Behind the sphere: nothing drawn there (unless a front mark covers the spot).
+      bool covered = false;
+      for(const auto& m : front_marks) covered = covered || std::hypot(m[0] - q[0], m[1] - q[1]) < 14;
+      if(covered) continue;
+      ++back;
+      EXPECT_EQ(differences_near(a, b, q[0], q[1], 8), 0) << "hidden vertex " << s.first;
+    }
+  }
+  EXPECT_GE(front, 2);
+  EXPECT_GE(back, 2);
+  // Nothing but the discs changed: at most the discs of all visible marks.
+  EXPECT_LE(count_differences(a, b), 8 * M_PI * 7 * 7);
+}
+
+TEST(NFieldPictures, SingularityMarksShowTheSignTheIndexAndALabel)
+{
+  Mesh sphere = make_icosphere(3);
+  TVF::Discrete_operators<Mesh> ops(sphere);
+  const TVF::Intrinsic_mesh& M = ops.intrinsic_mesh();
+  // The vertex nearest the camera, and one at the back.
+  int nearest = 0, farthest = 0;
+  for(int v = 0; v < M.number_of_vertices(); ++v)
+  {
+    if(M.position(v)[2] > M.position(nearest)[2]) nearest = v;
+    if(M.position(v)[2] < M.position(farthest)[2]) farthest = v;
+  }
+  const int size = 200;
+  const auto q = front_view_pixel(M, M.position(nearest), size, size);
+  auto draw = [&](std::vector<std::pair<int, int>> marks, bool labels, const std::string& name) {
+    TVF::Field_renderer r(ops.shared_matrices()->shared_mesh(), front_view(size, size));
+    TVF::Singularity_style style;
+    style.labels = labels;
+    if(!marks.empty()) r.add_singularities(marks, 4, style);
+    return picture_of(r, name);
+  };
+  const Image plain = draw({}, false, "mark_plain");
+  const Image positive = draw({{nearest, 1}}, false, "mark_positive");
+  const Image negative = draw({{nearest, -1}, {farthest, -1}}, false, "mark_negative");
+  const Image four = draw({{nearest, 4}}, false, "mark_four");
+  const Image zero = draw({{nearest, 0}}, false, "mark_zero");
+  const Image labelled = draw({{nearest, -1}}, true, "mark_labelled");
+  EXPECT_TRUE(reddish(positive.at(static_cast<int>(q[0]), static_cast<int>(q[1]))));
+  EXPECT_TRUE(bluish(negative.at(static_cast<int>(q[0]), static_cast<int>(q[1]))));
+  // The same disc in another colour (the white ring alike), and nothing of the hidden one.
+  EXPECT_EQ(count_differences(plain, negative), count_differences(plain, positive));
+  int fill_changes = 0, outside = 0;
+  for(std::size_t i = 0; i < plain.pixels.size(); ++i)
+    if((positive.pixels[i] & 0xffffff) != (negative.pixels[i] & 0xffffff))
+    {
+      ++fill_changes;
+      outside += (plain.pixels[i] & 0xffffff) == (positive.pixels[i] & 0xffffff);
+    }
+  EXPECT_GT(fill_changes, 0.8 * M_PI * 4.5 * 4.5);
+  EXPECT_EQ(outside, 0);
+  EXPECT_EQ(count_differences(plain, zero), 0);
+  // The disc of index 4/4 has four times the area of that of 1/4 (radius 10 against 5, each
+  // with its ring of width 1).
+  const double ratio = double(count_differences(plain, four)) / count_differences(plain, positive);
+  EXPECT_GT(ratio, 3);
+  EXPECT_LT(ratio, 4.5);
+  // The label "-1/4" right of the disc, in the disc's colour.
+  int label_pixels = 0, blue_label_pixels = 0;
+  for(int y = static_cast<int>(q[1]) - 12; y <= static_cast<int>(q[1]) + 8; ++y)
+    for(int x = static_cast<int>(q[0]) + 7; x <= static_cast<int>(q[0]) + 45; ++x)
+    {
+      label_pixels += (labelled.at(x, y) & 0xffffff) != (negative.at(x, y) & 0xffffff);
+      blue_label_pixels += bluish(labelled.at(x, y));
+    }
+  EXPECT_GT(label_pixels, 40);
+  EXPECT_GT(blue_label_pixels, 10);
+
+  // In SVG the discs are vector paths: the visible one only.
+  TVF::Field_renderer r(ops.shared_matrices()->shared_mesh(), front_view(size, size));
+  r.add_singularities({{nearest, 1}, {farthest, 1}}, 4);
+  const std::string svg_file = temporary_path("marks.svg");
+  r.write_svg(svg_file);
+  std::ifstream in(svg_file);
+  const std::string svg{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  std::size_t red_paths = 0;
+  for(std::size_t at = svg.find("rgb(86%,12%,10%)"); at != std::string::npos; at = svg.find("rgb(86%,12%,10%)", at + 1))
+    ++red_paths;
+  EXPECT_EQ(red_paths, 1u);
+}
+
+TEST(NFieldPictures, SingularitiesRefuseBadInput)
+{
+  Mesh sphere = make_icosphere(2);
+  TVF::Discrete_operators<Mesh> ops(sphere);
+  TVF::Field_renderer renderer(ops.shared_matrices()->shared_mesh());
+  const int nv = static_cast<int>(sphere.number_of_vertices());
+  EXPECT_NE(refusal([&] { renderer.add_singularities({{0, 1}}, 0); }).find("symmetry of singularities must be at least 1, not 0"),
+            std::string::npos);
+  EXPECT_NE(refusal([&] { renderer.add_singularities({{nv, 1}}, 4); })
+                .find("singular vertex " + std::to_string(nv) + " is not a vertex of the mesh (0 to " +
+                      std::to_string(nv - 1) + ")"),
+            std::string::npos);
+  EXPECT_NE(refusal([&] { renderer.add_singularities({{-1, 1}}, 4); }).find("singular vertex -1 is not a vertex"),
+            std::string::npos);
+  TVF::Singularity_style flat;
+  flat.radius = 0;
+  EXPECT_NE(refusal([&] { renderer.add_singularities({{0, 1}}, 4, flat); }).find("radius of singularity marks must be positive"),
+            std::string::npos);
+  // A vertex in no face has no place on the surface.
+  Mesh with_isolated = make_mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {5, 5, 5}}, {{0, 1, 2}});
+  TVF::Discrete_operators<Mesh> small(with_isolated);
+  TVF::Field_renderer lonely(small.shared_matrices()->shared_mesh());
+  EXPECT_NE(refusal([&] { lonely.add_singularities({{3, 1}}, 4); }).find("singular vertex 3 lies in no face"),
             std::string::npos);
 }

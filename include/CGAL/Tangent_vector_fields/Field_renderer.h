@@ -7,8 +7,8 @@
 /// \file Field_renderer.h
 /// Pictures of a mesh and its fields, drawn with Cairo into PNG and SVG files: a
 /// shaded surface, coloured by a scalar quantity with a colour bar, with
-/// streamlines, fur strokes, arrows or the glyphs of n-direction fields on top, hidden
-/// where the surface covers them.
+/// streamlines, fur strokes, arrows or the glyphs of n-direction fields and the marks of
+/// their singular vertices on top, hidden where the surface covers them.
 ///
 /// `Field_renderer` works on an `Intrinsic_mesh` and frame coordinates;
 /// `Field_picture.h` offers the same on property maps of any `TriangleMesh`.
@@ -140,6 +140,22 @@ struct Arrow_style
   int symmetry = 1;
 };
 
+/// \brief Style of the marks of singular vertices: a disc at each, coloured by the sign of
+/// its index `k / n`, its area proportional to `|k|`.
+struct Singularity_style
+{
+  Colour positive{0.86, 0.12, 0.10}; ///< index > 0: red
+  Colour negative{0.10, 0.30, 0.90}; ///< index < 0: blue
+  /// Radius of the disc of index `+-1/n`, pixels; index `k/n` gets `sqrt(|k|)` times it.
+  double radius = 5;
+  /// A ring around the disc (width 0: none), so that it stands out on any colour.
+  Colour outline{1, 1, 1};
+  double outline_width = 1;
+  double opacity = 1;
+  /// Writes the index next to each disc, as `k/n` ("+1/4", "-1/4"; "+1" for n = 1).
+  bool labels = false;
+};
+
 /// \brief Renders a mesh, a scalar quantity and fields into PNG or SVG pictures.
 ///
 /// The surface is rasterised with a z-buffer (`supersampling`^2 samples per pixel,
@@ -181,7 +197,16 @@ public:
   /// `vectors`: any one of the n vectors of each face, in frame coordinates (`2 nf`), such as
   /// `N_field_operators::to_vectors(z)`.
   void add_glyphs(const Eigen::VectorXd& vectors, int n, Arrow_style style = Arrow_style());
-  /// Removes all streamlines, arrows and glyphs.
+  /// \brief Marks singular vertices: `vertex_k` holds pairs (vertex, k), the index `k / n`
+  /// as `n_field_singularities` gives it; pairs with k = 0 are not drawn.
+  ///
+  /// A mark is drawn where the surface shows its vertex (the same test as for lines), so the
+  /// singularities on the far side stay hidden.
+  /// \throws Invalid_input if `n < 1`, a vertex is not one of the mesh's or lies in no face,
+  ///         or the radius is not positive.
+  void add_singularities(const std::vector<std::pair<int, int>>& vertex_k, int n,
+                         const Singularity_style& style = Singularity_style());
+  /// Removes all streamlines, arrows, glyphs and singularities.
   void clear_overlays();
 
   /// \throws Invalid_input if the file cannot be written.
