@@ -284,6 +284,8 @@ void Field_renderer::Impl::draw_legend(cairo_t* cr) const
   draw_text(cr, format_number(range_min), tx, y + bar_h + 0.35 * font, font, 0);
   if(range_min < 0 && range_max > 0 && colouring.symmetric)
     draw_text(cr, "0", tx, y + bar_h * range_max / (range_max - range_min) + 0.35 * font, font, 0);
+  if(colouring.logarithmic) // the middle value tells the scale
+    draw_text(cr, format_number(std::sqrt(range_min * range_max)), tx, y + bar_h / 2 + 0.35 * font, font, 0);
   if(!colouring.label.empty()) draw_text(cr, colouring.label, x + bar_w / 2, y - 0.9 * font, font, 0.5);
 }
 

@@ -75,15 +75,20 @@ void Field_renderer::Impl::set_values(std::vector<double> v, bool vertices, cons
                         std::to_string(n) + "), got " + std::to_string(v.size()));
   if(!(c.clip_fraction >= 0 && c.clip_fraction < 0.5))
     throw Invalid_input("renderer: clip_fraction must lie in [0, 0.5)");
+  if(c.logarithmic && c.symmetric) throw Invalid_input("renderer: a logarithmic colour scale cannot be symmetric");
+  if(c.logarithmic && (c.minimum <= 0 || c.maximum <= 0))
+    throw Invalid_input("renderer: the range of a logarithmic colour scale must be positive");
   values = std::move(v);
   per_vertex = vertices;
   colouring = c;
-  // The automatic range: quantiles of the finite values (of vertices in faces).
+  // The automatic range: quantiles of the finite values (of vertices in faces; positive
+  // ones on a logarithmic scale).
   std::vector<double> finite;
   for(std::size_t i = 0; i < values.size(); ++i)
-    if(std::isfinite(values[i]) && !(vertices && mesh->is_isolated_vertex(static_cast<int>(i))))
+    if(std::isfinite(values[i]) && !(vertices && mesh->is_isolated_vertex(static_cast<int>(i))) &&
+       !(c.logarithmic && !(values[i] > 0)))
       finite.push_back(values[i]);
-  double lo = 0, hi = 1;
+  double lo = c.logarithmic ? 1 : 0, hi = c.logarithmic ? 10 : 1;
   if(!finite.empty())
   {
     std::sort(finite.begin(), finite.end());
@@ -99,7 +104,13 @@ void Field_renderer::Impl::set_values(std::vector<double> v, bool vertices, cons
   }
   if(std::isfinite(c.minimum)) lo = c.minimum;
   if(std::isfinite(c.maximum)) hi = c.maximum;
-  if(!(hi > lo))
+  if(!(hi > lo) && c.logarithmic)
+  {
+    const double a = std::min(lo, hi), b = std::max(lo, hi);
+    lo = a / (1 + 1e-3);
+    hi = b * (1 + 1e-3);
+  }
+  else if(!(hi > lo))
   {
     const double pad = std::max(std::abs(lo) * 1e-3, 1e-30);
     lo -= pad;
@@ -112,6 +123,8 @@ void Field_renderer::Impl::set_values(std::vector<double> v, bool vertices, cons
 Colour Field_renderer::Impl::value_colour(double x) const
 {
   if(!std::isfinite(x)) return {0.5, 0.5, 0.5};
+  if(colouring.logarithmic) // values <= 0 take the bottom colour
+    return colour_at(colouring.map, x > 0 ? std::log(x / range_min) / std::log(range_max / range_min) : 0);
   return colour_at(colouring.map, (x - range_min) / (range_max - range_min));
 }
 

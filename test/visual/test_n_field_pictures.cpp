@@ -2,17 +2,20 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 
 // Pictures of n-direction fields: n-fold glyphs (arrows are the glyphs of symmetry 1, a glyph
-// has the shape of its n and does not depend on which of the n vectors it is given), and the
-// singular vertices marked where the surface shows them.
+// has the shape of its n and does not depend on which of the n vectors it is given), the
+// singular vertices marked where the surface shows them, and the wrappers on property maps.
 
 #include "picture_test_support.h"
 #include "test_meshes.h"
 
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Tangent_vector_fields/Discrete_operators.h>
+#include <CGAL/Tangent_vector_fields/Field_picture.h>
 #include <CGAL/Tangent_vector_fields/Field_renderer.h>
 #include <CGAL/Tangent_vector_fields/N_field_singularities.h>
 #include <CGAL/Tangent_vector_fields/Smoothest_n_field_solver.h>
 #include <CGAL/Tangent_vector_fields/errors.h>
+#include <CGAL/Tangent_vector_fields/smoothest_n_field.h>
 
 #include <gtest/gtest.h>
 
@@ -359,5 +362,43 @@ TEST(NFieldPictures, SingularitiesRefuseBadInput)
   TVF::Discrete_operators<Mesh> small(with_isolated);
   TVF::Field_renderer lonely(small.shared_matrices()->shared_mesh());
   EXPECT_NE(refusal([&] { lonely.add_singularities({{3, 1}}, 4); }).find("singular vertex 3 lies in no face"),
+            std::string::npos);
+}
+
+TEST(NFieldPictures, LogarithmicColourScale)
+{
+  // Values from 1e-3 at the bottom of the sphere to 1e3 at the top: on a logarithmic scale the
+  // equator (value ~1) is in the middle of viridis (teal), on a linear one at its bottom (purple).
+  Mesh sphere = make_icosphere(3);
+  auto value = sphere.add_property_map<Face_index, double>("f:value", 0.).first;
+  double lo = 1e300, hi = 0;
+  for(Face_index f : sphere.faces())
+  {
+    double y = 0;
+    for(Vertex_index v : vertices_around_face(sphere.halfedge(f), sphere)) y += sphere.point(v).y() / 3;
+    value[f] = std::pow(10., 3 * y);
+    lo = std::min(lo, value[f]);
+    hi = std::max(hi, value[f]);
+  }
+  TVF::Field_picture<Mesh> linear(sphere, front_view(200, 200)), logarithmic(sphere, front_view(200, 200));
+  TVF::Scalar_colouring log_scale;
+  log_scale.logarithmic = true;
+  linear.colour_faces(value);
+  logarithmic.colour_faces(value, log_scale);
+  EXPECT_EQ(logarithmic.renderer().colour_range(), std::make_pair(lo, hi));
+  linear.write_png(temporary_path("linear.png"));
+  logarithmic.write_png(temporary_path("logarithmic.png"));
+  const std::uint32_t a = read_png(temporary_path("linear.png")).at(100, 100),
+                      b = read_png(temporary_path("logarithmic.png")).at(100, 100);
+  EXPECT_LT(Image::green(a), Image::blue(a));
+  EXPECT_GT(Image::green(b), Image::red(b) + 50);
+
+  TVF::Scalar_colouring bad = log_scale;
+  bad.symmetric = true;
+  EXPECT_NE(refusal([&] { logarithmic.colour_faces(value, bad); }).find("logarithmic colour scale cannot be symmetric"),
+            std::string::npos);
+  bad = log_scale;
+  bad.minimum = 0;
+  EXPECT_NE(refusal([&] { logarithmic.colour_faces(value, bad); }).find("range of a logarithmic colour scale must be positive"),
             std::string::npos);
 }

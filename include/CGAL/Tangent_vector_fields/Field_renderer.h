@@ -103,6 +103,10 @@ struct Scalar_colouring
   double clip_fraction = 0;
   /// The automatic range is `[-m, m]`, for signed quantities on a diverging map.
   bool symmetric = false;
+  /// Colours by the logarithm of the values (the automatic range from the positive values;
+  /// values <= 0 take the bottom colour; the colour bar shows the middle value too), for
+  /// quantities spread over orders of magnitude such as the energy density of an n-field.
+  bool logarithmic = false;
   /// Caption of the colour bar.
   std::string label;
 };
@@ -178,7 +182,8 @@ public:
   const Render_options& options() const;
 
   /// Colours each face by its value (`number_of_faces()` values).
-  /// \throws Invalid_input for a wrong count.
+  /// \throws Invalid_input for a wrong count, a `clip_fraction` outside [0, 0.5), or a
+  ///         logarithmic scale that is symmetric or has a given minimum or maximum <= 0.
   void colour_faces(std::vector<double> values, const Scalar_colouring& colouring = Scalar_colouring());
   /// Colours the surface by values at the vertices, interpolated linearly in each face.
   void colour_vertices(std::vector<double> values, const Scalar_colouring& colouring = Scalar_colouring());
