@@ -10,7 +10,9 @@
 // and 4. cross fields softly aligned to the principal curvature directions (CGAL's jet
 // fitting), smoothest and spline, against their unaligned versions.  Prints energies and singularities (Poincare-Hopf: indices sum to 4 chi), and
 // writes the fields (first vector per face) as PLY face properties and the hatching of the
-// smoothest cross field (its evenly spaced streamlines, two families) as OBJ polylines.
+// smoothest cross field (its evenly spaced streamlines, two families) as OBJ polylines; with
+// Cairo, a picture of the smoothest cross field (<prefix>_smoothest.png): coloured by its energy
+// density (where it turns), a cross per grid cell, the singular vertices marked.
 //
 // Usage: n_field_design [mesh] [output-prefix] [number-of-eigenfields]
 
@@ -24,6 +26,9 @@
 #include <CGAL/Tangent_vector_fields/face_field_io.h>
 #include <CGAL/Tangent_vector_fields/field_export.h>
 #include <CGAL/Tangent_vector_fields/smoothest_n_field.h>
+#ifdef TVF_HAS_CAIRO
+#include <CGAL/Tangent_vector_fields/Field_picture.h>
+#endif
 
 #include <chrono>
 #include <cmath>
@@ -204,6 +209,27 @@ int main(int argc, char** argv)
     auto map = mesh.property_map<Face_index, K::Vector_3>(std::string("f:") + name).first;
     TVF::add_face_field_properties(mesh, name, map);
   }
+#ifdef TVF_HAS_CAIRO
+  {
+    TVF::Render_options view;
+    view.width = 900;
+    view.height = 700;
+    view.title = "smoothest cross field";
+    TVF::Field_picture<Mesh> picture(mesh, view);
+    TVF::Scalar_colouring turning;
+    turning.logarithmic = true; // the density peaks at the singularities, orders of magnitude above the rest
+    turning.clip_fraction = 0.02;
+    turning.label = "energy density (log scale)";
+    picture.colour_by_n_field_energy(smoothest, 4, turning);
+    TVF::Arrow_style white_crosses;
+    white_crosses.colour = {1, 1, 1};
+    white_crosses.spacing = 18;
+    picture.add_n_field_glyphs(smoothest, 4, white_crosses);
+    picture.add_n_field_singularities(smoothest, 4);
+    picture.write_png(prefix + "_smoothest.png");
+    std::cout << "wrote " << prefix << "_smoothest.png\n";
+  }
+#endif
   std::ofstream out(prefix + ".ply", std::ios::binary);
   CGAL::IO::write_PLY(out, mesh);
   std::cout << "wrote " << prefix << ".ply (face properties smoothest, first_order, spline, reduced, prescribed, curvature, "

@@ -365,6 +365,56 @@ TEST(NFieldPictures, SingularitiesRefuseBadInput)
             std::string::npos);
 }
 
+TEST(NFieldPictures, PicturesOfAnNFieldInAPropertyMap)
+{
+  Mesh sphere = make_icosphere(3);
+  auto cross = sphere.add_property_map<Face_index, Vector_3>("f:cross", Vector_3(0, 0, 0)).first;
+  const auto singular = TVF::smoothest_n_field(sphere, 4, cross);
+  ASSERT_EQ(singular.size(), 8u);
+  // The same cross field through another of its vectors: each turned by 90 degrees, n x v.
+  auto turned = sphere.add_property_map<Face_index, Vector_3>("f:turned", Vector_3(0, 0, 0)).first;
+  for(Face_index f : sphere.faces())
+  {
+    const Vector_3 normal = CGAL::Polygon_mesh_processing::compute_face_normal(f, sphere);
+    turned[f] = CGAL::cross_product(normal, cross[f]);
+  }
+  TVF::Render_options options = front_view(300, 300);
+  options.legend = true;
+  TVF::Field_picture<Mesh> a(sphere, options), b(sphere, options);
+  TVF::Scalar_colouring colouring;
+  colouring.label = "energy density";
+  a.colour_by_n_field_energy(cross, 4, colouring);
+  b.colour_by_n_field_energy(turned, 4, colouring);
+  a.add_n_field_glyphs(cross, 4);
+  b.add_n_field_glyphs(turned, 4);
+  EXPECT_EQ(a.add_n_field_singularities(cross, 4), singular); // what smoothest_n_field reported
+  EXPECT_EQ(b.add_n_field_singularities(turned, 4), singular);
+  a.write_png(temporary_path("picture_a.png"));
+  b.write_png(temporary_path("picture_b.png"));
+  EXPECT_EQ(count_differences(read_png(temporary_path("picture_a.png")), read_png(temporary_path("picture_b.png"))), 0);
+
+  // The colours are the energy density: its range, largest around the singular vertices.
+  TVF::Discrete_operators<Mesh> ops(sphere);
+  const TVF::N_field_operators nops(ops.shared_matrices(), 4);
+  const Eigen::VectorXd density = nops.energy_density(nops.from_vectors(ops.to_frame_coordinates(cross)));
+  const auto range = a.renderer().colour_range();
+  EXPECT_DOUBLE_EQ(range.first, density.minCoeff());
+  EXPECT_DOUBLE_EQ(range.second, density.maxCoeff());
+  const TVF::Intrinsic_mesh& M = ops.intrinsic_mesh();
+  double around = 0;
+  int count = 0;
+  for(int f = 0; f < M.number_of_faces(); ++f)
+    for(const auto& s : singular)
+      for(int v : M.face_vertices(f))
+        if(v == static_cast<int>(s.first))
+        {
+          around += density[f];
+          ++count;
+        }
+  EXPECT_GT(around / count, 2 * density.mean());
+  EXPECT_THROW(a.add_n_field_glyphs(cross, 0), TVF::Invalid_input);
+}
+
 TEST(NFieldPictures, LogarithmicColourScale)
 {
   // Values from 1e-3 at the bottom of the sphere to 1e3 at the top: on a logarithmic scale the

@@ -6,15 +6,21 @@
 
 /// \file Field_picture.h
 /// Pictures of fields of any `TriangleMesh`, from property maps: a thin layer over
-/// `Field_renderer` and `Streamline_tracer`.  Needs the package built with Cairo.
+/// `Field_renderer`, `Streamline_tracer` and, for n-direction fields, `N_field_operators`.
+/// Needs the package built with Cairo.
 
 #if !defined(TVF_HAS_CAIRO) && !defined(TVF_DOXYGEN_RUNNING)
 #error "Field_picture.h needs the package built with Cairo (libcairo2-dev); TVF_HAS_CAIRO is not defined"
 #endif
 
 #include <CGAL/Tangent_vector_fields/Field_renderer.h>
+#include <CGAL/Tangent_vector_fields/N_field_singularities.h>
 #include <CGAL/Tangent_vector_fields/Streamline_tracer.h>
 #include <CGAL/Tangent_vector_fields/internal/Mesh_adapter.h>
+
+#include <memory>
+#include <utility>
+#include <vector>
 
 namespace CGAL {
 namespace Tangent_vector_fields {
@@ -27,6 +33,13 @@ namespace Tangent_vector_fields {
 /// picture.add_evenly_spaced_streamlines(field);          // traced and drawn
 /// picture.write_png("field.png");
 /// \endcode
+/// n-direction fields are given as a face map holding any one of their n vectors per face
+/// (as `smoothest_n_field` writes them) and n:
+/// \code
+/// picture.colour_by_n_field_energy(cross, 4);            // where the field turns
+/// picture.add_n_field_glyphs(cross, 4);                  // a cross per grid cell
+/// picture.add_n_field_singularities(cross, 4);           // red +k/4, blue -k/4
+/// \endcode
 /// Constructor named parameters: those of the mesh (`vertex_point_map`, index maps,
 /// intrinsic-mesh options), as for `Discrete_operators`.
 template <class TriangleMesh>
@@ -34,6 +47,7 @@ class Field_picture
 {
 public:
   typedef internal::Mesh_adapter<TriangleMesh> Adapter;
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
 
   template <class NamedParameters = parameters::Default_named_parameters>
   explicit Field_picture(const TriangleMesh& mesh, const Render_options& options = Render_options(),
@@ -74,6 +88,42 @@ public:
   void add_arrows(const FaceVectorMap& field, const Arrow_style& style = Arrow_style())
   {
     renderer_.add_arrows(adapter_.read_field(field), style);
+  }
+
+  /// Draws an n-direction field as n-fold glyphs (`Arrow_style::symmetry` = n): a segment per
+  /// grid cell for n = 2, a cross for n = 4.  `field`: any one of the n vectors per face.
+  template <class FaceVectorMap>
+  void add_n_field_glyphs(const FaceVectorMap& field, int n, const Arrow_style& style = Arrow_style())
+  {
+    renderer_.add_glyphs(adapter_.read_field(field), n, style);
+  }
+
+  /// Marks the singular vertices of an n-direction field (their indices as
+  /// `n_field_singularities` computes them) and returns them with their `k` (index `k / n`).
+  template <class FaceVectorMap>
+  std::vector<std::pair<vertex_descriptor, int>>
+  add_n_field_singularities(const FaceVectorMap& field, int n, const Singularity_style& style = Singularity_style())
+  {
+    const auto ops = n_operators(n, N_field_boundary::free); // the index does not depend on it
+    std::vector<std::pair<int, int>> marks;
+    std::vector<std::pair<vertex_descriptor, int>> singular;
+    for(const N_field_singularity& s : n_field_singularities(*ops, ops->from_vectors(adapter_.read_field(field))))
+    {
+      marks.emplace_back(s.vertex, s.index);
+      singular.emplace_back(adapter_.vertices()[s.vertex], s.index);
+    }
+    renderer_.add_singularities(marks, n, style);
+    return singular;
+  }
+
+  /// Colours the faces by the first-order smoothness energy density of an n-direction field
+  /// (`N_field_operators::energy_density`: per unit area, how fast the field turns there).
+  template <class FaceVectorMap>
+  void colour_by_n_field_energy(const FaceVectorMap& field, int n, const Scalar_colouring& colouring = Scalar_colouring(),
+                                N_field_boundary boundary = N_field_boundary::free)
+  {
+    const auto ops = n_operators(n, boundary);
+    renderer_.colour_faces(to_vector(ops->energy_density(ops->from_vectors(adapter_.read_field(field)))), colouring);
   }
 
   /// Draws streamlines computed elsewhere (face indices of this mesh's face index map).
@@ -119,8 +169,18 @@ public:
 private:
   static std::vector<double> to_vector(const Eigen::VectorXd& x) { return std::vector<double>(x.data(), x.data() + x.size()); }
 
+  // The operators of n-fields, on the mesh's matrices (built once, on first request).
+  std::shared_ptr<const N_field_operators> n_operators(int n, N_field_boundary boundary)
+  {
+    if(!matrices_) matrices_ = std::make_shared<const Operator_matrices>(adapter_.intrinsic_mesh());
+    N_field_options options;
+    options.boundary = boundary;
+    return std::make_shared<const N_field_operators>(matrices_, n, options);
+  }
+
   Adapter adapter_;
   Field_renderer renderer_;
+  std::shared_ptr<const Operator_matrices> matrices_;
 };
 
 } // namespace Tangent_vector_fields
