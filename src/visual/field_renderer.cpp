@@ -104,13 +104,16 @@ void Field_renderer::Impl::set_values(std::vector<double> v, bool vertices, cons
   }
   if(std::isfinite(c.minimum)) lo = c.minimum;
   if(std::isfinite(c.maximum)) hi = c.maximum;
-  if(!(hi > lo) && c.logarithmic)
+  // A range within rounding of one value (the magnitudes of a unit field) would show the
+  // rounding errors as colours: it is widened about the value as if it were constant.
+  const bool constant = !(hi - lo > 1e-9 * std::max(std::abs(lo), std::abs(hi)));
+  if(constant && c.logarithmic)
   {
     const double a = std::min(lo, hi), b = std::max(lo, hi);
     lo = a / (1 + 1e-3);
     hi = b * (1 + 1e-3);
   }
-  else if(!(hi > lo))
+  else if(constant)
   {
     const double pad = std::max(std::abs(lo) * 1e-3, 1e-30);
     lo -= pad;

@@ -452,3 +452,23 @@ TEST(NFieldPictures, LogarithmicColourScale)
   EXPECT_NE(refusal([&] { logarithmic.colour_faces(value, bad); }).find("range of a logarithmic colour scale must be positive"),
             std::string::npos);
 }
+
+TEST(NFieldPictures, ValuesEqualUpToRoundingShowOneColour)
+{
+  // The magnitudes of a unit n-field are 1 up to rounding: the colours must not show the rounding.
+  Mesh sphere = make_icosphere(2);
+  auto one = sphere.add_property_map<Face_index, double>("f:one", 1.).first;
+  auto nearly_one = sphere.add_property_map<Face_index, double>("f:nearly_one", 1.).first;
+  std::mt19937 gen(5);
+  std::uniform_int_distribution<int> ulps(-4, 4);
+  for(Face_index f : sphere.faces()) nearly_one[f] = 1 + ulps(gen) * 1.1e-16;
+  TVF::Field_picture<Mesh> a(sphere, front_view(120, 120)), b(sphere, front_view(120, 120));
+  a.colour_faces(one);
+  b.colour_faces(nearly_one);
+  const auto range = b.renderer().colour_range();
+  EXPECT_LT(range.first, 1 - 1e-4);
+  EXPECT_GT(range.second, 1 + 1e-4);
+  a.write_png(temporary_path("one.png"));
+  b.write_png(temporary_path("nearly_one.png"));
+  EXPECT_EQ(count_differences(read_png(temporary_path("one.png")), read_png(temporary_path("nearly_one.png"))), 0);
+}
