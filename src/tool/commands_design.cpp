@@ -5,6 +5,7 @@
 // work on frame coordinates through the index-based classes (no Surface_mesh here).
 
 #include "tool.h"
+#include "tool_render.h"
 
 #include <CGAL/Tangent_vector_fields/Eigenfield_basis.h>
 #include <CGAL/Tangent_vector_fields/Full_spline_solver.h>
@@ -15,9 +16,6 @@
 #include <CGAL/Tangent_vector_fields/constraint_file_io.h>
 #include <CGAL/Tangent_vector_fields/errors.h>
 #include <CGAL/Tangent_vector_fields/field_files.h>
-#ifdef TVF_HAS_CAIRO
-#include <CGAL/Tangent_vector_fields/Field_renderer.h>
-#endif
 
 #include <algorithm>
 #include <cerrno>
@@ -90,36 +88,6 @@ TVF::Fur_options fur_options(const Command_line& command, TVF::Length_unit unit)
   fur.random_seed = command.get<unsigned>("seed");
   return fur;
 }
-
-#ifdef TVF_HAS_CAIRO
-TVF::Colour parse_colour(const std::string& text)
-{
-  static const std::map<std::string, TVF::Colour> names = {
-      {"black", {0.08, 0.08, 0.08}}, {"white", {1, 1, 1}},     {"grey", {0.5, 0.5, 0.5}},  {"gray", {0.5, 0.5, 0.5}},
-      {"red", {0.8, 0.1, 0.1}},      {"blue", {0.1, 0.2, 0.8}}, {"green", {0.1, 0.6, 0.2}}, {"orange", {0.95, 0.55, 0.1}}};
-  const auto it = names.find(text);
-  if(it != names.end()) return it->second;
-  unsigned r = 0, g = 0, b = 0;
-  char end = 0;
-  if(text.size() == 7 && text[0] == '#' && std::sscanf(text.c_str() + 1, "%2x%2x%2x%c", &r, &g, &b, &end) == 3)
-    return {r / 255., g / 255., b / 255.};
-  throw Usage_error("unknown colour '" + text + "' (black, white, grey, red, blue, green, orange or #rrggbb)");
-}
-
-std::array<double, 3> parse_direction(const std::string& text)
-{
-  static const std::map<std::string, std::array<double, 3>> axes = {
-      {"x", {{1, 0, 0}}}, {"y", {{0, 1, 0}}}, {"z", {{0, 0, 1}}}, {"-x", {{-1, 0, 0}}}, {"-y", {{0, -1, 0}}}, {"-z", {{0, 0, -1}}}};
-  const auto it = axes.find(text);
-  if(it != axes.end()) return it->second;
-  std::array<double, 3> d{{0, 0, 0}};
-  char end = 0;
-  if(std::sscanf(text.c_str(), "%lf,%lf,%lf%c", &d[0], &d[1], &d[2], &end) == 3 &&
-     std::isfinite(d[0] + d[1] + d[2]) && d[0] * d[0] + d[1] * d[1] + d[2] * d[2] > 0)
-    return d;
-  throw Usage_error("'" + text + "' is not a direction (x, y, z, -x, -y, -z or three numbers a,b,c)");
-}
-#endif
 
 } // namespace
 
@@ -260,48 +228,27 @@ int render_command(const Arguments& args)
       "lines and the colour bar as vectors).");
   command.positional("mesh", "the mesh file");
   add_field_options(command);
-  command.group("picture").add_options()
+  po::options_description& picture = command.group("picture");
+  picture.add_options()
     ("color", po::value<std::string>()->value_name("Q"),
      "colour the surface by: divergence, curl (vertex values, blue-grey-red), magnitude (faces, viridis) or "
-     "none; default: magnitude with a field, none without")
-    ("colormap", po::value<std::string>()->value_name("MAP"), "viridis, cool_warm or greys instead of the default")
-    ("clip", po::value<double>()->default_value(0.02)->value_name("F"),
-     "leave this fraction of the values out at each end of the colour range")
+     "none; default: magnitude with a field, none without");
+  add_colour_scale_options(picture);
+  picture.add_options()
     ("streamlines", "draw evenly spaced streamlines")
     ("fur", "draw fur strokes")
     ("arrows", "draw arrows on a screen grid")
-    ("no-overlay", "draw only the colours")
-    ("arrow-spacing", po::value<double>()->value_name("PX"), "distance between arrows in pixels (default width / 45)")
-    ("constant-arrows", "arrows of one length instead of proportional to the magnitude")
-    ("line-color", po::value<std::string>()->value_name("C"),
-     "lines and arrows: black, white, grey, red, blue, green, orange or #rrggbb (default: white on viridis, else black)")
-    ("line-width", po::value<double>()->value_name("PX"), "line width in pixels (default 1.3, fur 1.6)")
+    ("no-overlay", "draw only the colours");
+  add_mark_options(picture);
+  picture.add_options()
     ("unit", po::value<std::string>()->default_value("diagonal")->value_name("U"),
      "unit of --separation and --length: diagonal (of the bounding box), edge (mean edge length) or absolute");
   add_streamline_options(command);
-  command.group("view").add_options()
-    ("width", po::value<int>()->default_value(1200)->value_name("PX"), "image width")
-    ("height", po::value<int>()->default_value(900)->value_name("PX"), "image height")
-    ("azimuth", po::value<double>()->default_value(30)->value_name("DEG"), "camera angle about the up axis")
-    ("elevation", po::value<double>()->default_value(20)->value_name("DEG"), "camera angle above the horizon")
-    ("up", po::value<std::string>()->default_value("y")->value_name("DIR"), "up axis: x, y, z, -x, -y, -z or a,b,c")
-    ("view-direction", po::value<std::string>()->value_name("a,b,c"),
-     "look along this direction instead of --azimuth and --elevation")
-    ("zoom", po::value<double>()->default_value(1)->value_name("Z"), "enlarge the model")
-    ("orthographic", "orthographic instead of perspective projection")
-    ("flat", "flat shading (one normal per face)")
-    ("title", po::value<std::string>()->value_name("TEXT"), "text in the top-left corner")
-    ("no-legend", "no colour bar");
-  command.group("output").add_options()("output,o", po::value<std::vector<std::string>>()->composing()->value_name("FILE"),
-                                        "the picture: .png or .svg; repeatable");
+  add_view_and_output_options(command);
   if(!command.parse(args)) return 0; // --help
-#ifndef TVF_HAS_CAIRO
-  throw Tool_error("this tvf was built without Cairo, so it draws no pictures (install libcairo2-dev and rebuild)");
-#else
-  command.require("output");
-  for(const std::string& path : command.get<std::vector<std::string>>("output"))
-    if(extension(path) != "png" && extension(path) != "svg")
-      throw Usage_error("cannot draw into '" + path + "': use .png or .svg");
+  require_pictures();
+#ifdef TVF_HAS_CAIRO
+  const TVF::Render_options options = render_options(command);
   const bool has_field = command.has("field") || command.has("field-ply");
   const std::string colour = command.has("color") ? command.get<std::string>("color") : (has_field ? "magnitude" : "none");
   if(colour != "divergence" && colour != "curl" && colour != "magnitude" && colour != "none")
@@ -313,24 +260,8 @@ int render_command(const Arguments& args)
                            (has_field && !command.has("fur") && !command.has("arrows") && !command.has("no-overlay"));
   if(!has_field && (colour != "none" || command.has("streamlines") || command.has("fur") || command.has("arrows")))
     throw Usage_error("colours and overlays need a field (--field or --field-ply)");
-
-  TVF::Render_options options;
-  options.width = command.get<int>("width");
-  options.height = command.get<int>("height");
-  if(options.width < 16 || options.height < 16 || options.width > 16384 || options.height > 16384)
-    throw Usage_error("the image size must be between 16 and 16384 pixels");
-  options.camera.azimuth = command.get<double>("azimuth");
-  options.camera.elevation = command.get<double>("elevation");
-  options.camera.up = parse_direction(command.get<std::string>("up"));
-  if(command.has("view-direction")) options.camera.view_direction = parse_direction(command.get<std::string>("view-direction"));
-  options.camera.zoom = command.get<double>("zoom");
-  if(!(options.camera.zoom > 0)) throw Usage_error("'--zoom' must be positive");
-  if(command.has("orthographic")) options.camera.projection = TVF::Projection::orthographic;
-  options.smooth_shading = !command.has("flat");
-  options.legend = !command.has("no-legend");
-  if(command.has("title")) options.title = command.get<std::string>("title");
-  const double clip = command.get<double>("clip");
-  if(!(clip >= 0 && clip < 0.5)) throw Usage_error("'--clip' must lie in [0, 0.5)");
+  const bool signed_quantity = colour == "divergence" || colour == "curl";
+  TVF::Scalar_colouring colouring = colour_scale(command, signed_quantity ? TVF::Colour_map::cool_warm : TVF::Colour_map::viridis);
   const TVF::Length_unit unit = length_unit(command.get<std::string>("unit"));
   const TVF::Evenly_spaced_options even = evenly_spaced_options(command, unit);
   const TVF::Fur_options fur = fur_options(command, unit);
@@ -341,18 +272,6 @@ int render_command(const Arguments& args)
   const auto start = std::chrono::steady_clock::now();
   TVF::Field_renderer renderer(mesh.shared_intrinsic(), options);
 
-  TVF::Scalar_colouring colouring;
-  colouring.clip_fraction = clip;
-  const bool signed_quantity = colour == "divergence" || colour == "curl";
-  colouring.map = signed_quantity ? TVF::Colour_map::cool_warm : TVF::Colour_map::viridis;
-  if(command.has("colormap"))
-  {
-    const std::string map = command.get<std::string>("colormap");
-    if(map == "viridis") colouring.map = TVF::Colour_map::viridis;
-    else if(map == "cool_warm") colouring.map = TVF::Colour_map::cool_warm;
-    else if(map == "greys") colouring.map = TVF::Colour_map::greys;
-    else throw Usage_error("unknown --colormap '" + map + "' (viridis, cool_warm or greys)");
-  }
   // A diverging map is centred on zero for signed quantities.
   colouring.symmetric = signed_quantity && colouring.map == TVF::Colour_map::cool_warm;
   if(signed_quantity)
@@ -369,10 +288,7 @@ int render_command(const Arguments& args)
     renderer.colour_faces(std::move(m), colouring);
   }
 
-  const bool light_background = colour == "none" || colouring.map != TVF::Colour_map::viridis;
-  const TVF::Colour line_colour = command.has("line-color") ? parse_colour(command.get<std::string>("line-color"))
-                                  : light_background        ? TVF::Colour{0.08, 0.08, 0.08}
-                                                            : TVF::Colour{1, 1, 1};
+  const TVF::Colour lines = line_colour(command, colour != "none" && colouring.map == TVF::Colour_map::viridis);
   std::size_t lines_drawn = 0;
   if(streamlines || command.has("fur"))
   {
@@ -381,11 +297,11 @@ int render_command(const Arguments& args)
     {
       Step step("tracing streamlines");
       TVF::Line_style style;
-      style.colour = line_colour;
+      style.colour = lines;
       style.width = command.has("line-width") ? command.get<double>("line-width") : 1.3;
-      std::vector<TVF::Streamline> lines = tracer.evenly_spaced(even);
-      lines_drawn += lines.size();
-      renderer.add_streamlines(std::move(lines), style);
+      std::vector<TVF::Streamline> traced = tracer.evenly_spaced(even);
+      lines_drawn += traced.size();
+      renderer.add_streamlines(std::move(traced), style);
     }
     if(command.has("fur"))
     {
@@ -394,42 +310,19 @@ int render_command(const Arguments& args)
       style.taper = true;
       style.width = command.has("line-width") ? command.get<double>("line-width") : 1.6;
       style.opacity = 0.85;
-      style.colour = line_colour;
+      style.colour = lines;
       std::vector<TVF::Streamline> strokes = tracer.fur(fur);
       lines_drawn += strokes.size();
       renderer.add_streamlines(std::move(strokes), style);
     }
   }
-  if(command.has("arrows"))
-  {
-    TVF::Arrow_style style;
-    style.colour = line_colour;
-    style.spacing = command.has("arrow-spacing") ? command.get<double>("arrow-spacing") : options.width / 45.0;
-    if(!(style.spacing >= 4)) throw Usage_error("'--arrow-spacing' must be at least 4 pixels");
-    if(command.has("line-width")) style.width = command.get<double>("line-width");
-    style.scale_by_magnitude = !command.has("constant-arrows");
-    renderer.add_arrows(x, style);
-  }
-  for(const std::string& path : command.get<std::vector<std::string>>("output"))
-  {
-    Step step("drawing");
-    try
-    {
-      if(extension(path) == "png") renderer.write_png(path);
-      else renderer.write_svg(path);
-    }
-    catch(const TVF::Invalid_input& e)
-    {
-      throw Tool_error(about(path, one_line(e.what())));
-    }
-    step.done();
-    say("wrote %s (%d x %d", path.c_str(), options.width, options.height);
-    if(colour != "none") say(", colours: %s", colour.c_str());
-    if(lines_drawn > 0) say(", %zu lines", lines_drawn);
-    say(") in %.2f s\n", seconds_since(start));
-  }
-  return 0;
+  if(command.has("arrows")) renderer.add_arrows(x, arrow_style(command, options, lines));
+  std::string details;
+  if(colour != "none") details += ", colours: " + colour;
+  if(lines_drawn > 0) details += ", " + std::to_string(lines_drawn) + " lines";
+  write_pictures(command, renderer, details, start);
 #endif
+  return 0;
 }
 
 // --- streamlines ---------------------------------------------------------------------------------
