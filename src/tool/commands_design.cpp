@@ -220,12 +220,13 @@ int design_command(const Arguments& args)
 
 int render_command(const Arguments& args)
 {
+  if(wants_n_field(args)) return n_field_render_command(args);
   Command_line command(
       "tvf render <mesh> [--field FILE] [--color Q] [--streamlines | --fur | --arrows] [view] -o FILE.png|.svg",
       "Draws the mesh, coloured by a quantity of the field, with evenly spaced streamlines, fur strokes\n"
       "(thick at the root, thin at the tip) or arrows on top; lines behind the surface are hidden.  With a\n"
       "field and no overlay option, streamlines are drawn.  PNG or SVG (the surface as an embedded image,\n"
-      "lines and the colour bar as vectors).");
+      "lines and the colour bar as vectors).  With --n N: an n-field (see 'tvf render --n 4 --help').");
   command.positional("mesh", "the mesh file");
   add_field_options(command);
   po::options_description& picture = command.group("picture");

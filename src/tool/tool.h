@@ -74,13 +74,14 @@ int render_command(const Arguments&);
 int streamlines_command(const Arguments&);
 int export_command(const Arguments&);
 int serve_command(const Arguments&);
-// n-direction fields (commands_n_fields.cpp); basis, design and export hand over to the
+// n-direction fields (commands_n_fields.cpp); basis, design, export and render hand over to the
 // n-field forms when `wants_n_field` (a `--n` option) or, for design, `constraint_file_has_n`.
 int smoothest_command(const Arguments&);
 int singularities_command(const Arguments&);
 int n_field_basis_command(const Arguments&);
 int n_field_design_command(const Arguments&);
 int n_field_export_command(const Arguments&);
+int n_field_render_command(const Arguments&);
 bool wants_n_field(const Arguments& args);
 bool constraint_file_has_n(const Arguments& args);
 
