@@ -5,7 +5,7 @@
 // work on frame coordinates through the index-based classes (no Surface_mesh here).
 
 #include "tool.h"
-#include "tool_render.h"
+#include "tool_lines.h"
 
 #include <CGAL/Tangent_vector_fields/Eigenfield_basis.h>
 #include <CGAL/Tangent_vector_fields/Full_spline_solver.h>
@@ -25,71 +25,6 @@
 #include <map>
 
 namespace tvf_tool {
-
-namespace {
-
-TVF::Length_unit length_unit(const std::string& name)
-{
-  if(name == "diagonal") return TVF::Length_unit::bounding_box_diagonal;
-  if(name == "edge") return TVF::Length_unit::mean_edge_length;
-  if(name == "absolute") return TVF::Length_unit::absolute;
-  throw Usage_error("unknown length unit '" + name + "' (diagonal, edge or absolute)");
-}
-
-// A summary of why the ends of the streamlines stopped, such as "boundary 12, closed_loop 3".
-std::string stop_summary(const std::vector<TVF::Streamline>& lines)
-{
-  std::map<std::string, int> counts;
-  for(const TVF::Streamline& s : lines)
-    for(TVF::Streamline_stop stop : {s.backward_stop, s.forward_stop})
-      if(stop != TVF::Streamline_stop::none) ++counts[TVF::to_string(stop)];
-  std::string text;
-  for(const auto& c : counts) text += (text.empty() ? "" : ", ") + c.first + " " + std::to_string(c.second);
-  return text.empty() ? "none" : text;
-}
-
-void add_streamline_options(Command_line& command)
-{
-  command.group("streamlines").add_options()
-    ("separation", po::value<double>()->default_value(0.02)->value_name("S"),
-     "distance between evenly spaced streamlines (in --unit)")
-    ("seed", po::value<unsigned>()->default_value(1)->value_name("N"), "random seed of the seeds and fur roots");
-  command.group("fur").add_options()
-    ("strokes", po::value<int>()->value_name("N"), "number of fur strokes (default 5000, or from --density)")
-    ("density", po::value<double>()->value_name("D"), "instead: strokes per unit area (mesh units squared)")
-    ("length", po::value<double>()->default_value(0.03)->value_name("L"), "length of a stroke (in --unit)")
-    ("scale-by-magnitude", "stroke lengths proportional to the magnitude at their roots");
-}
-
-TVF::Evenly_spaced_options evenly_spaced_options(const Command_line& command, TVF::Length_unit unit)
-{
-  TVF::Evenly_spaced_options even;
-  even.separation = command.get<double>("separation");
-  if(!(even.separation > 0) || !std::isfinite(even.separation)) throw Usage_error("'--separation' must be positive");
-  even.separation_unit = unit;
-  even.random_seed = command.get<unsigned>("seed");
-  return even;
-}
-
-TVF::Fur_options fur_options(const Command_line& command, TVF::Length_unit unit)
-{
-  TVF::Fur_options fur;
-  command.at_most_one({"strokes", "density"});
-  fur.number_of_strokes = command.has("strokes") ? command.get<int>("strokes") : 0;
-  if(command.has("density")) fur.density = command.get<double>("density");
-  else if(!command.has("strokes")) fur.number_of_strokes = 5000;
-  if(fur.number_of_strokes < 0 || (command.has("strokes") && fur.number_of_strokes == 0))
-    throw Usage_error("'--strokes' must be positive");
-  if(command.has("density") && !(fur.density > 0)) throw Usage_error("'--density' must be positive");
-  fur.length = command.get<double>("length");
-  if(!(fur.length > 0) || !std::isfinite(fur.length)) throw Usage_error("'--length' must be positive");
-  fur.length_unit = unit;
-  fur.scale_length_by_magnitude = command.has("scale-by-magnitude");
-  fur.random_seed = command.get<unsigned>("seed");
-  return fur;
-}
-
-} // namespace
 
 // --- design -------------------------------------------------------------------------------------
 
@@ -292,31 +227,8 @@ int render_command(const Arguments& args)
   const TVF::Colour lines = line_colour(command, colour != "none" && colouring.map == TVF::Colour_map::viridis);
   std::size_t lines_drawn = 0;
   if(streamlines || command.has("fur"))
-  {
-    const TVF::Streamline_tracer tracer(mesh.shared_intrinsic(), x);
-    if(streamlines)
-    {
-      Step step("tracing streamlines");
-      TVF::Line_style style;
-      style.colour = lines;
-      style.width = command.has("line-width") ? command.get<double>("line-width") : 1.3;
-      std::vector<TVF::Streamline> traced = tracer.evenly_spaced(even);
-      lines_drawn += traced.size();
-      renderer.add_streamlines(std::move(traced), style);
-    }
-    if(command.has("fur"))
-    {
-      Step step("growing fur");
-      TVF::Line_style style;
-      style.taper = true;
-      style.width = command.has("line-width") ? command.get<double>("line-width") : 1.6;
-      style.opacity = 0.85;
-      style.colour = lines;
-      std::vector<TVF::Streamline> strokes = tracer.fur(fur);
-      lines_drawn += strokes.size();
-      renderer.add_streamlines(std::move(strokes), style);
-    }
-  }
+    lines_drawn = add_lines(renderer, TVF::Streamline_tracer(mesh.shared_intrinsic(), x), command, lines,
+                            streamlines ? &even : nullptr, command.has("fur") ? &fur : nullptr);
   if(command.has("arrows")) renderer.add_arrows(x, arrow_style(command, options, lines));
   std::string details;
   if(colour != "none") details += ", colours: " + colour;
@@ -330,6 +242,7 @@ int render_command(const Arguments& args)
 
 int streamlines_command(const Arguments& args)
 {
+  if(wants_n_field(args)) return n_field_streamlines_command(args);
   Command_line command("tvf streamlines <mesh> (--field FILE | --field-ply NAME) [--separation S | --fur ...] -o FILE",
                        "Traces evenly spaced streamlines of a field (exactly, face by face; Jobard and Lefer on the\n"
                        "surface), or fur strokes from random roots, and writes them as polylines: .obj (v and l\n"
@@ -390,23 +303,7 @@ int streamlines_command(const Arguments& args)
       lines.size(), command.has("fur") ? "fur strokes" : "streamlines", points, length,
       length / mesh.bounding_box_diagonal(), closed, seconds_since(start));
   if(!command.has("fur")) say("  ends: %s\n", stop_summary(lines).c_str());
-  for(const std::string& path : command.get<std::vector<std::string>>("output"))
-  {
-    const std::string ext = extension(path);
-    std::ofstream out(path);
-    if(!out) throw Tool_error("cannot open '" + path + "' for writing: " + std::strerror(errno));
-    try
-    {
-      if(ext == "obj") TVF::write_streamlines_obj(out, lines);
-      else if(ext == "ply") TVF::write_streamlines_ply(out, lines);
-      else TVF::write_vtk_polydata(out, TVF::streamlines_polydata(lines));
-    }
-    catch(const TVF::Invalid_input& e)
-    {
-      throw Tool_error(about(path, one_line(e.what())));
-    }
-    say("wrote %s\n", path.c_str());
-  }
+  write_streamline_files(command, lines);
   return 0;
 }
 

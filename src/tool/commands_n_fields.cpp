@@ -7,7 +7,7 @@
 // mesh type (.tvf, .ply) go through Tool_mesh.
 
 #include "tool.h"
-#include "tool_render.h"
+#include "tool_lines.h"
 
 #include <CGAL/Tangent_vector_fields/N_field_basis.h>
 #include <CGAL/Tangent_vector_fields/N_field_singularities.h>
@@ -487,24 +487,27 @@ int n_field_render_command(const Arguments& args)
   picture.add_options()
     ("glyphs", "draw the field as n-fold glyphs (the default)")
     ("no-overlay", "draw no glyphs (colours and singularities only)")
-    ("streamlines", "hatching: evenly spaced streamlines of all N families (not yet available for n-fields)")
-    ("fur", "fur strokes (not yet available for n-fields)")
+    ("streamlines", "hatching: evenly spaced streamlines of all N families (lines of one family keep --separation)")
+    ("fur", "fur strokes along every one of the N vectors of each root")
     ("no-singularities", "do not mark the singular vertices")
     ("singularity-labels", "write the index k/N next to each singular vertex")
     ("singularity-size", po::value<double>()->value_name("PX"), "radius of the mark of index 1/N (default width / 200)")
     ("list", po::value<int>()->default_value(0)->value_name("K"), "print the first K singular vertices");
   add_mark_options(picture);
+  picture.add_options()
+    ("unit", po::value<std::string>()->default_value("diagonal")->value_name("U"),
+     "unit of --separation and --length: diagonal (of the bounding box), edge (mean edge length) or absolute");
+  add_streamline_options(command);
   add_view_and_output_options(command);
   if(!command.parse(args)) return 0; // --help
   require_pictures();
 #ifdef TVF_HAS_CAIRO
-  // Hatching (streamlines of all N families, the branch matched across edges) needs the n-field
-  // tracer; until it exists the options are refused rather than drawn with the vector tracer.
-  for(const char* name : {"streamlines", "fur"})
-    if(command.has(name))
-      throw Usage_error(std::string("'--") + name + "' with --n: streamlines of n-fields (hatching) are not yet "
-                        "available; draw the field with --glyphs");
   command.at_most_one({"glyphs", "no-overlay"});
+  command.at_most_one({"no-overlay", "streamlines"});
+  command.at_most_one({"no-overlay", "fur"});
+  const TVF::Length_unit unit = length_unit(command.get<std::string>("unit"));
+  const TVF::Evenly_spaced_options even = evenly_spaced_options(command, unit);
+  const TVF::Fur_options fur = fur_options(command, unit);
   const TVF::Render_options options = render_options(command);
   const std::string colour = command.get<std::string>("color");
   if(colour != "energy" && colour != "magnitude" && colour != "none")
@@ -538,10 +541,15 @@ int n_field_render_command(const Arguments& args)
     for(std::size_t f = 0; f < m.size(); ++f) m[f] = std::hypot(z[2 * f], z[2 * f + 1]); // |z_f|: the vectors' length
     renderer.colour_faces(std::move(m), colouring);
   }
-  // Overlays.  Hatching will be added here (renderer.add_streamlines with the n-field tracer's
-  // lines); the glyphs share the arrows' options.
+  // Overlays: hatching and fur through the n-field tracer (the branch matched across edges, stops
+  // at the singular vertices); glyphs unless lines were asked for, sharing the arrows' options.
   const TVF::Colour lines = line_colour(command, colour != "none" && colouring.map == TVF::Colour_map::viridis);
-  if(!command.has("no-overlay")) renderer.add_glyphs(ops->to_vectors(z), n, arrow_style(command, options, lines));
+  std::size_t lines_drawn = 0;
+  if(command.has("streamlines") || command.has("fur"))
+    lines_drawn = add_lines(renderer, TVF::Streamline_tracer(*ops, z), command, lines,
+                            command.has("streamlines") ? &even : nullptr, command.has("fur") ? &fur : nullptr);
+  const bool glyphs = command.has("glyphs") || (!command.has("no-overlay") && lines_drawn == 0);
+  if(glyphs) renderer.add_glyphs(ops->to_vectors(z), n, arrow_style(command, options, lines));
   const std::vector<TVF::N_field_singularity> singular = TVF::n_field_singularities(*ops, z);
   report_singularities(mesh, n, singular, command.get<int>("list"));
   if(!command.has("no-singularities"))
@@ -552,10 +560,55 @@ int n_field_render_command(const Arguments& args)
   }
   std::string details;
   if(colour != "none") details += ", colours: " + colour;
-  if(!command.has("no-overlay")) details += ", " + std::to_string(n) + "-fold glyphs";
+  if(glyphs) details += ", " + std::to_string(n) + "-fold glyphs";
+  if(lines_drawn > 0) details += ", " + std::to_string(lines_drawn) + " lines";
   if(!command.has("no-singularities")) details += ", " + std::to_string(singular.size()) + " singularities";
   write_pictures(command, renderer, details, start);
 #endif
+  return 0;
+}
+
+int n_field_streamlines_command(const Arguments& args)
+{
+  Command_line command("tvf streamlines <mesh> --n N --field FILE [--separation S | --fur ...] -o FILE",
+                       "The hatching of an n-field: evenly spaced streamlines of every family (N/2 for even N, N for\n"
+                       "odd N; the branch matched face by face, stopping at the singular vertices), or fur strokes\n"
+                       "along each of the N vectors of random roots; written as polylines (.obj, .ply, .vtp).");
+  command.positional("mesh", "the mesh file");
+  add_symmetry_options(command);
+  add_field_options(command);
+  command.group("streamlines").add_options()
+    ("fur", "fur strokes instead of the hatching")
+    ("unit", po::value<std::string>()->default_value("diagonal")->value_name("U"),
+     "unit of --separation and --length: diagonal (of the bounding box), edge (mean edge length) or absolute");
+  add_streamline_options(command);
+  command.group("output").add_options()("output,o", po::value<std::vector<std::string>>()->composing()->value_name("FILE"),
+                                        "the polylines: .obj, .ply or .vtp; repeatable");
+  if(!command.parse(args)) return 0; // --help
+  command.require("output");
+  for(const std::string& path : command.get<std::vector<std::string>>("output"))
+    if(extension(path) != "obj" && extension(path) != "ply" && extension(path) != "vtp")
+      throw Usage_error("cannot write streamlines to '" + path + "': use .obj, .ply or .vtp");
+  const TVF::Length_unit unit = length_unit(command.get<std::string>("unit"));
+  const TVF::Evenly_spaced_options even = evenly_spaced_options(command, unit);
+  const TVF::Fur_options fur = fur_options(command, unit);
+  const Tool_mesh mesh(command.positional_value(), command.mollify());
+  const N_operators ops = n_field_operators(command, mesh);
+  const Eigen::VectorXd z = read_n_field(command, mesh, *ops);
+  const auto start = std::chrono::steady_clock::now();
+  const TVF::Streamline_tracer tracer(*ops, z);
+  std::vector<TVF::Streamline> lines;
+  {
+    Step step(command.has("fur") ? "growing fur" : "hatching");
+    lines = command.has("fur") ? tracer.fur(fur) : tracer.evenly_spaced(even);
+  }
+  double length = 0;
+  for(const TVF::Streamline& l : lines) length += l.length();
+  say("%d-field: %zu %s in %d families, total length %.6g (%.4g bounding box diagonals), %zu singular vertices; %.3f s\n",
+      ops->n(), lines.size(), command.has("fur") ? "fur strokes" : "streamlines", tracer.number_of_families(), length,
+      length / mesh.bounding_box_diagonal(), tracer.singular_vertices().size(), seconds_since(start));
+  if(!command.has("fur")) say("  ends: %s\n", stop_summary(lines).c_str());
+  write_streamline_files(command, lines);
   return 0;
 }
 

@@ -81,6 +81,7 @@ int singularities_command(const Arguments&);
 int n_field_basis_command(const Arguments&);
 int n_field_design_command(const Arguments&);
 int n_field_export_command(const Arguments&);
+int n_field_streamlines_command(const Arguments&);
 int n_field_render_command(const Arguments&);
 bool wants_n_field(const Arguments& args);
 bool constraint_file_has_n(const Arguments& args);
