@@ -60,3 +60,25 @@ $tvf render $elephant -q --field $work/designed_low_pass.tvf --color curl --stre
   --title "low-pass exp(-0.02 λ·area): the vortex is spread out" -o $gallery/designed_low_pass.png
 
 ls -l $gallery/*.png
+
+echo "7. n-direction fields: hatching of cross and line fields, singular vertices marked"
+nview=(--azimuth 0 --elevation 10 --width 800 --height 600 --separation 0.012)
+fandisk=$meshes/fandisk.off
+$tvf smoothest $fandisk --n 4 --align-curvature --alignment-weight 10 -q -o $work/fandisk_cross.rawfield
+$tvf render $fandisk --n 4 --field $work/fandisk_cross.rawfield -q --streamlines --azimuth 35 --elevation 25 \
+  --width 800 --height 600 --separation 0.01 --title "smoothest cross field aligned to the curvature (genus 0)" \
+  -o $gallery/n_fandisk_cross.png
+$tvf smoothest $elephant --n 4 -q -o $work/elephant_cross.rawfield
+$tvf render $elephant --n 4 --field $work/elephant_cross.rawfield -q --streamlines "${nview[@]}" \
+  --title "smoothest cross field (genus 3: indices sum to 4 chi = -16)" -o $gallery/n_elephant_cross.png
+$tvf design $elephant --constraints $gallery/elephant_line_constraints.json -q -o $work/elephant_line.rawfield
+$tvf render $elephant --n 2 --field $work/elephant_line.rawfield -q --streamlines --singularity-labels "${nview[@]}" \
+  --title "line field: +1/2 and -1/2 prescribed, 4 vectors" -o $gallery/n_elephant_line.png
+for order in 1 2; do
+  $tvf design $elephant --constraints $gallery/elephant_cross_constraints.json --order $order -q \
+    -o $work/elephant_cross_order$order.rawfield
+done
+$tvf render $elephant --n 4 --field $work/elephant_cross_order1.rawfield -q --streamlines "${nview[@]}" \
+  --title "8 crosses, first-order design (min E_D)" -o $gallery/n_first_order.png
+$tvf render $elephant --n 4 --field $work/elephant_cross_order2.rawfield -q --streamlines "${nview[@]}" \
+  --title "8 crosses, higher-order spline (min E_B)" -o $gallery/n_higher_order.png

@@ -403,7 +403,9 @@ int n_field_design_command(const Arguments& args)
     ("constraints", po::value<std::string>()->value_name("FILE"), "the constraints (JSON with \"n\")")
     ("basis", po::value<std::string>()->value_name("FILE"), "solve in the span of this n-field basis (.tvfn)")
     ("basis-size,d", po::value<int>()->value_name("D"), "use the first D elements of the basis (even; default: all)")
-    ("omega", po::value<double>()->value_name("W"), "tension, for the mesh scaled to unit area; default: the file's");
+    ("omega", po::value<double>()->value_name("W"), "tension, for the mesh scaled to unit area; default: the file's")
+    ("order", po::value<int>()->value_name("M"),
+     "energy order: 1 the classical first-order design (min E_D), 2 the spline (E_B); default: the file's");
   add_alignment_options(command);
   add_n_output_options(command, "the designed field", "design");
   if(!command.parse(args)) return 0; // --help
@@ -423,6 +425,11 @@ int n_field_design_command(const Arguments& args)
   if(command.has("n") && command.get<int>("n") != file.n)
     throw Usage_error("'--n " + std::to_string(command.get<int>("n")) + "' contradicts the file's \"n\": " + std::to_string(file.n));
   const N_operators ops = n_field_operators(command, mesh, file.singularities, file.n);
+  if(command.has("order"))
+  {
+    file.order = command.get<int>("order");
+    if(file.order < 1) throw Usage_error("'--order' must be at least 1");
+  }
   TVF::Spline_options options;
   options.omega = command.has("omega") ? command.get<double>("omega") : file.omega;
   if(!(options.omega >= 0) || !std::isfinite(options.omega)) throw Usage_error("'--omega' must be a finite number >= 0");
