@@ -176,9 +176,6 @@ int render_command(const Arguments& args)
     ("arrows", "draw arrows on a screen grid")
     ("no-overlay", "draw only the colours");
   add_mark_options(picture);
-  picture.add_options()
-    ("unit", po::value<std::string>()->default_value("diagonal")->value_name("U"),
-     "unit of --separation and --length: diagonal (of the bounding box), edge (mean edge length) or absolute");
   add_streamline_options(command);
   add_view_and_output_options(command);
   if(!command.parse(args)) return 0; // --help
@@ -251,9 +248,6 @@ int streamlines_command(const Arguments& args)
   add_field_options(command);
   command.group("streamlines").add_options()
     ("fur", "fur strokes instead of evenly spaced streamlines")
-    ("unit", po::value<std::string>()->default_value("diagonal")->value_name("U"),
-     "unit of --separation, --length and --max-length: diagonal (of the bounding box), edge (mean edge length) or "
-     "absolute")
     ("max-length", po::value<double>()->value_name("L"), "longest streamline in each direction from its seed (in --unit)")
     ("max-lines", po::value<int>()->value_name("N"), "stop after N streamlines");
   add_streamline_options(command);

@@ -501,9 +501,6 @@ int n_field_render_command(const Arguments& args)
     ("singularity-size", po::value<double>()->value_name("PX"), "radius of the mark of index 1/N (default width / 200)")
     ("list", po::value<int>()->default_value(0)->value_name("K"), "print the first K singular vertices");
   add_mark_options(picture);
-  picture.add_options()
-    ("unit", po::value<std::string>()->default_value("diagonal")->value_name("U"),
-     "unit of --separation and --length: diagonal (of the bounding box), edge (mean edge length) or absolute");
   add_streamline_options(command);
   add_view_and_output_options(command);
   if(!command.parse(args)) return 0; // --help
@@ -585,9 +582,7 @@ int n_field_streamlines_command(const Arguments& args)
   add_symmetry_options(command);
   add_field_options(command);
   command.group("streamlines").add_options()
-    ("fur", "fur strokes instead of the hatching")
-    ("unit", po::value<std::string>()->default_value("diagonal")->value_name("U"),
-     "unit of --separation and --length: diagonal (of the bounding box), edge (mean edge length) or absolute");
+    ("fur", "fur strokes instead of the hatching");
   add_streamline_options(command);
   command.group("output").add_options()("output,o", po::value<std::vector<std::string>>()->composing()->value_name("FILE"),
                                         "the polylines: .obj, .ply or .vtp; repeatable");

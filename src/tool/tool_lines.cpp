@@ -37,6 +37,9 @@ std::string stop_summary(const std::vector<TVF::Streamline>& lines)
 void add_streamline_options(Command_line& command)
 {
   command.group("streamlines").add_options()
+    ("unit", po::value<std::string>()->default_value("diagonal")->value_name("U"),
+     "unit of the lengths (--separation, --length, --max-length): diagonal (of the bounding box), edge (mean edge "
+     "length) or absolute")
     ("separation", po::value<double>()->default_value(0.02)->value_name("S"),
      "distance between evenly spaced streamlines (in --unit)")
     ("seed", po::value<unsigned>()->default_value(1)->value_name("N"), "random seed of the seeds and fur roots");

@@ -20,7 +20,7 @@ namespace tvf_tool {
 TVF::Length_unit length_unit(const std::string& name);
 /// Why the ends of the streamlines stopped, such as "boundary 12, closed_loop 3".
 std::string stop_summary(const std::vector<TVF::Streamline>& lines);
-/// `--separation`, `--seed` and the fur group (`--strokes`, `--density`, `--length`, `--scale-by-magnitude`).
+/// `--unit`, `--separation`, `--seed` and the fur group (`--strokes`, `--density`, `--length`, `--scale-by-magnitude`).
 void add_streamline_options(Command_line& command);
 TVF::Evenly_spaced_options evenly_spaced_options(const Command_line& command, TVF::Length_unit unit);
 TVF::Fur_options fur_options(const Command_line& command, TVF::Length_unit unit);
