@@ -100,7 +100,7 @@ void report_singularities(const Tool_mesh& mesh, int n, const std::vector<TVF::N
   list = std::min<int>(list, static_cast<int>(singular.size()));
   for(int i = 0; i < list; ++i)
     say("  vertex %d: index %d/%d%s\n", singular[i].vertex, singular[i].index, n, singular[i].on_boundary ? " (boundary)" : "");
-  if(list < static_cast<int>(singular.size())) say("  ... (--list K for more)\n");
+  if(list > 0 && list < static_cast<int>(singular.size())) say("  ... (--list K for more)\n");
   if(sum != n * chi) throw Tool_error("the indices sum to " + std::to_string(sum) + ", not N chi = " + std::to_string(n * chi));
 }
 
