@@ -74,6 +74,13 @@ Eigen::VectorXd Reduced_spline_solver::field() const
   return basis_->field(coefficients());
 }
 
+Eigen::MatrixXd Reduced_spline_solver::fields_of(const Eigen::MatrixXd& a) const
+{
+  Compressed_fields c;
+  c.coefficients = a;
+  return basis_->decompress(c);
+}
+
 std::string Reduced_spline_solver::dependency_hint() const
 {
   const int free = d_ - static_cast<int>(rows_in_basis_.harmonic_positions().size());

@@ -47,9 +47,25 @@ N_field_constraint parse(const internal::Json_reader& r, const Intrinsic_mesh& m
 
 } // namespace
 
-N_field_constraint_file read_n_field_constraint_file(std::istream& in, std::shared_ptr<const Operator_matrices> operators)
+namespace internal {
+
+N_field_constraint parse_n_field_constraint(const Json& node, const std::string& name, const N_field_operators& operators)
 {
-  const internal::Json root = internal::parse_json(in, "n-field constraint file");
+  const Json_reader r{node, name};
+  const N_field_constraint c = parse(r, operators.mesh());
+  try
+  {
+    constraint_rows(operators, c);
+  }
+  catch(const Invalid_input& e)
+  {
+    r.fail(e.what());
+  }
+  return c;
+}
+
+N_field_constraint_file parse_n_field_constraint_file(const Json& root, std::shared_ptr<const Operator_matrices> operators)
+{
   const internal::Json_reader file_reader{root, "n-field constraint file"};
   file_reader.allow_only({"n", "omega", "order", "singularities", "constraints"});
   N_field_constraint_file file;
@@ -89,20 +105,15 @@ N_field_constraint_file read_n_field_constraint_file(std::istream& in, std::shar
   }
   int position = 0;
   for(const internal::Json& entry : file_reader.array("constraints"))
-  {
-    const internal::Json_reader r{entry, "constraint " + std::to_string(position++)};
-    const N_field_constraint c = parse(r, operators->mesh());
-    try
-    {
-      constraint_rows(*n_operators, c);
-    }
-    catch(const Invalid_input& e)
-    {
-      r.fail(e.what());
-    }
-    file.constraints.push_back(c);
-  }
+    file.constraints.push_back(parse_n_field_constraint(entry, "constraint " + std::to_string(position++), *n_operators));
   return file;
+}
+
+} // namespace internal
+
+N_field_constraint_file read_n_field_constraint_file(std::istream& in, std::shared_ptr<const Operator_matrices> operators)
+{
+  return internal::parse_n_field_constraint_file(internal::parse_json(in, "n-field constraint file"), std::move(operators));
 }
 
 N_field_constraint_file read_n_field_constraint_file(const std::string& path,

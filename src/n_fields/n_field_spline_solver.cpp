@@ -133,6 +133,11 @@ void Reduced_n_field_spline_solver::add_harmonic(const Eigen::VectorXd& z, Eigen
 
 Eigen::VectorXd Reduced_n_field_spline_solver::field() const { return basis_->field(coefficients()); }
 
+Eigen::MatrixXd Reduced_n_field_spline_solver::fields_of(const Eigen::MatrixXd& a) const
+{
+  return basis_->fields().leftCols(a.rows()) * a;
+}
+
 std::string Reduced_n_field_spline_solver::dependency_hint() const
 {
   if(number_of_rows() + 1 > d_ - harmonic_dimension())

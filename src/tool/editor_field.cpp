@@ -5,15 +5,10 @@
 // (the field as 3D vectors, a scalar, streamlines or fur), computed only when asked for.
 
 #include "editor_messages.h"
-#include "tool.h" // field_norm
-
-#include <CGAL/Tangent_vector_fields/Eigenfield_basis.h>
-#include <CGAL/Tangent_vector_fields/Full_spline_solver.h>
-#include <CGAL/Tangent_vector_fields/Reduced_spline_solver.h>
-#include <CGAL/Tangent_vector_fields/Streamline_tracer.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 namespace tvf_tool {
@@ -21,7 +16,7 @@ namespace tvf_tool {
 void Editor_session::set_display(Request& r)
 {
   require_ready(r);
-  Display display = display_;
+  Display_settings display = display_;
   const Json& t = r.tree;
   if(t.contains("lines"))
   {
@@ -32,8 +27,9 @@ void Editor_session::set_display(Request& r)
   if(t.contains("scalar"))
   {
     display.scalar = text_member(t, "scalar");
-    if(display.scalar != "divergence" && display.scalar != "curl" && display.scalar != "none")
-      throw Message_error("\"scalar\" must be \"divergence\", \"curl\" or \"none\"");
+    if(display.scalar != "none" && !design_->has_scalar(display.scalar))
+      throw Message_error(design_->n() == 1 ? "\"scalar\" must be \"divergence\", \"curl\" or \"none\" for a vector field"
+                                            : "\"scalar\" must be \"energy\" or \"none\" for an n-field");
   }
   if(t.contains("strokes")) display.strokes = static_cast<int>(integer_member(t, "strokes", 1, model_->limits().max_strokes));
   if(t.contains("length"))
@@ -53,53 +49,15 @@ void Editor_session::set_display(Request& r)
 
 void Editor_session::send_field(Request& r)
 {
-  const TVF::Intrinsic_mesh& mesh = model_->matrices().mesh();
-  const int nf = mesh.number_of_faces();
-
-  Clock::time_point start = Clock::now();
-  reduced_->coefficients(); // the solve (the small system)
-  const double solve_ms = r.reduced_ms + milliseconds_since(start);
-  Eigen::VectorXd x;
-  double reconstruct_ms = 0;
-  if(has_edited_field_)
-  {
-    x.swap(edited_field_);
-    reconstruct_ms = edited_field_ms_;
-    has_edited_field_ = false;
-  }
-  else
-  {
-    start = Clock::now();
-    x = reduced_->field();
-    reconstruct_ms = milliseconds_since(start);
-  }
-  const TVF::Spline_report* report = &reduced_->report();
-
-  std::string full_timing, full_difference;
-  if(use_full_)
-  {
-    std::lock_guard<std::mutex> lock(model_->full_solver_mutex());
-    start = Clock::now();
-    Eigen::VectorXd x_full = full_->field();
-    const double full_ms = r.full_ms + milliseconds_since(start);
-    const double difference = field_norm(model_->matrices(), x - x_full);
-    const double norm = field_norm(model_->matrices(), x_full);
-    full_timing = ",\"full_ms\":" + short_number(full_ms);
-    full_difference = ",\"difference\":" + number(norm > 0 ? difference / norm : difference);
-    x.swap(x_full);
-    report = &full_->report();
-  }
+  Design_field field = design_->field();
+  const double solve_ms = r.reduced_ms + field.solve_ms;
+  double reconstruct_ms = field.reconstruct_ms;
+  const Eigen::VectorXd& x = field.x;
 
   // 3D vectors (float32): what the page draws and the test checks.
-  start = Clock::now();
-  std::vector<float> vectors(3 * static_cast<std::size_t>(nf));
+  Clock::time_point start = Clock::now();
   double magnitude_max = 0;
-  for(int f = 0; f < nf; ++f)
-  {
-    const auto v = mesh.from_frame(f, x[2 * f], x[2 * f + 1]);
-    for(int k = 0; k < 3; ++k) vectors[3 * f + k] = static_cast<float>(v[k]);
-    magnitude_max = std::max(magnitude_max, std::hypot(x[2 * f], x[2 * f + 1]));
-  }
+  const std::vector<float> vectors = design_->vectors(x, magnitude_max);
   reconstruct_ms += milliseconds_since(start);
 
   std::vector<Array_out> arrays = {{"vectors", true, vectors.data(), vectors.size()}};
@@ -108,8 +66,7 @@ void Editor_session::send_field(Request& r)
   if(display_.scalar != "none")
   {
     start = Clock::now();
-    const Eigen::VectorXd s =
-        display_.scalar == "divergence" ? model_->matrices().divergence(x) : model_->matrices().curl(x);
+    const Eigen::VectorXd s = design_->scalar(display_.scalar, x);
     scalar.assign(s.data(), s.data() + s.size());
     scalar_min = s.size() ? s.minCoeff() : 0;
     scalar_max = s.size() ? s.maxCoeff() : 0;
@@ -121,45 +78,50 @@ void Editor_session::send_field(Request& r)
   if(display_.lines != "none")
   {
     start = Clock::now();
-    const TVF::Streamline_tracer tracer(model_->matrices().shared_mesh(), x);
-    std::vector<TVF::Streamline> traced;
-    if(display_.lines == "fur")
-    {
-      TVF::Fur_options fur;
-      fur.number_of_strokes = display_.strokes;
-      fur.length = display_.length;
-      fur.scale_length_by_magnitude = true;
-      traced = tracer.fur(fur);
-    }
-    else
-    {
-      TVF::Evenly_spaced_options even;
-      even.separation = display_.separation;
-      traced = tracer.evenly_spaced(even);
-    }
-    for(const TVF::Streamline& s : traced)
+    for(const TVF::Streamline& s : design_->lines(x, display_))
       for(std::size_t i = 0; i + 1 < s.points.size(); ++i)
         for(const auto& p : {s.points[i], s.points[i + 1]})
           for(int k = 0; k < 3; ++k) lines.push_back(static_cast<float>(p[k]));
     arrays.push_back({"lines", true, lines.data(), lines.size()});
     lines_ms = milliseconds_since(start);
   }
+  // n-fields: the singular vertices and their indices k (the index is k / n), every field.
+  std::vector<std::uint32_t> singular_vertices;
+  std::vector<float> singular_indices;
+  double singularities_ms = 0;
+  if(design_->n() > 1)
+  {
+    start = Clock::now();
+    for(const auto& [v, k] : design_->singularities(x))
+    {
+      singular_vertices.push_back(static_cast<std::uint32_t>(v));
+      singular_indices.push_back(static_cast<float>(k));
+    }
+    arrays.push_back({"singular_vertices", false, singular_vertices.data(), singular_vertices.size()});
+    arrays.push_back({"singular_indices", true, singular_indices.data(), singular_indices.size()});
+    singularities_ms = milliseconds_since(start);
+  }
 
-  std::vector<int> ids;
-  for(const auto& e : entries_) ids.push_back(e.first);
-  const std::string warnings = json_array(report->warnings, [](const std::string& w) { return quote(w); });
-  std::string members = "\"type\":\"field\"" + r.echo() + ",\"solver\":\"" + (use_full_ ? "full" : "reduced") +
-                        "\",\"basis_size\":" + std::to_string(reduced_->basis_size()) + ",\"omega\":" + number(omega_) +
-                        ",\"ids\":" + json_array(ids, [](int i) { return std::to_string(i); }) +
-                        ",\"report\":{\"residual\":" + number(report->constraint_residual) +
-                        ",\"undetermined_harmonic\":" + std::to_string(report->undetermined_harmonic) +
+  const TVF::Spline_report& report = field.report;
+  const std::string warnings = json_array(report.warnings, [](const std::string& w) { return quote(w); });
+  std::string members = "\"type\":\"field\"" + r.echo() + ",\"n\":" + std::to_string(design_->n()) +
+                        ",\"solver\":\"" + (field.full ? "full" : "reduced") +
+                        "\",\"basis_size\":" + std::to_string(design_->basis_size()) +
+                        ",\"omega\":" + number(design_->omega()) + ",\"ids\":" +
+                        json_array(design_->ids(), [](int i) { return std::to_string(i); }) +
+                        ",\"report\":{\"residual\":" + number(report.constraint_residual) +
+                        ",\"undetermined_harmonic\":" + std::to_string(report.undetermined_harmonic) +
                         ",\"warnings\":" + warnings + "},\"magnitude_max\":" + number(magnitude_max) +
                         ",\"scalar_range\":[" + number(scalar_min) + "," + number(scalar_max) + "]" +
+                        ",\"scalar_on\":\"" + (design_->n() == 1 ? "vertices" : "faces") + "\"" +
                         ",\"timings\":{\"solve_ms\":" + short_number(solve_ms) +
                         ",\"reconstruct_ms\":" + short_number(reconstruct_ms) + ",\"lines_ms\":" + short_number(lines_ms) +
-                        ",\"scalar_ms\":" + short_number(scalar_ms) + full_timing;
+                        ",\"scalar_ms\":" + short_number(scalar_ms) +
+                        (design_->n() > 1 ? ",\"singularities_ms\":" + short_number(singularities_ms) : std::string()) +
+                        (field.full ? ",\"full_ms\":" + short_number(r.full_ms + field.full_ms) : std::string());
   // server_ms is measured last, just before the message is handed to the transport.
-  members += ",\"server_ms\":" + short_number(milliseconds_since(r.received)) + "}" + full_difference;
+  members += ",\"server_ms\":" + short_number(milliseconds_since(r.received)) + "}" +
+             (field.full ? ",\"difference\":" + number(field.difference) : std::string());
   (*r.send)(binary_message(members, arrays));
 }
 

@@ -9,7 +9,6 @@
 
 #include "editor_session.h"
 
-#include <CGAL/Tangent_vector_fields/Field_constraint.h>
 #include <CGAL/Tangent_vector_fields/Spline_solver.h>
 #include <CGAL/Tangent_vector_fields/internal/constraint_json.h>
 
@@ -89,14 +88,12 @@ struct Editor_session::Request
   {
     text("\"type\":\"progress\",\"stage\":" + quote(stage) + ",\"fraction\":" + short_number(fraction));
   }
+  Design_progress progress_callback() const
+  {
+    return [this](const std::string& stage, double fraction) { progress(stage, fraction); };
+  }
 };
 
-struct Editor_session::Entry
-{
-  TVF::Field_constraint constraint;
-  double weight = 1;
-  TVF::Constraint_id reduced = -1, full = -1;
-};
 
 } // namespace tvf_tool
 

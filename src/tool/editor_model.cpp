@@ -8,6 +8,10 @@
 
 #include <CGAL/Tangent_vector_fields/Eigenfield_basis.h>
 #include <CGAL/Tangent_vector_fields/Hodge_solver.h>
+#include <CGAL/Tangent_vector_fields/N_field_basis.h>
+#include <CGAL/Tangent_vector_fields/N_field_operators.h>
+
+#include <thread>
 
 #include <cstdint>
 #include <vector>
@@ -66,6 +70,102 @@ std::shared_ptr<const TVF::Eigenfield_basis> Editor_model::basis() const
 {
   std::lock_guard<std::mutex> lock(mutex_);
   return basis_;
+}
+
+void Editor_model::set_n_field_basis_source(N_field_basis_source source)
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  n_field_source_ = std::move(source);
+}
+
+namespace {
+
+// The operators' lazy caches are filled before sessions share them (they are not
+// thread-safe while being built): everything the solvers, the tracer and the index use.
+void warm_up(const TVF::N_field_operators& ops)
+{
+  ops.transport_angles();
+  ops.connection_angles();
+  ops.edge_weights();
+  ops.vertex_curvatures();
+  ops.boundary_vertices();
+  ops.S();
+  ops.kernel();
+  if(ops.mesh().number_of_vertices() > 0) ops.vertex_fan(0);
+}
+
+} // namespace
+
+Editor_model::Status Editor_model::wait_n_field(int n, std::chrono::milliseconds timeout) const
+{
+  std::unique_lock<std::mutex> lock(mutex_);
+  auto it = n_fields_.find(n);
+  if(it == n_fields_.end())
+  {
+    // The first page to ask for this n starts the job; the others wait for the same one.
+    it = n_fields_.emplace(n, N_field_space()).first;
+    it->second.status.stage = "starting";
+    std::shared_ptr<const Editor_model> self = shared_from_this();
+    N_field_basis_source source = n_field_source_;
+    std::thread([self, n, source] {
+      auto progress = [&self, n](const std::string& stage, double fraction) {
+        std::lock_guard<std::mutex> lock(self->mutex_);
+        Status& s = self->n_fields_[n].status;
+        s.stage = stage;
+        s.fraction = std::min(1.0, std::max(0.0, fraction));
+      };
+      std::shared_ptr<const TVF::N_field_basis> basis;
+      std::string error;
+      try
+      {
+        auto ops = std::make_shared<const TVF::N_field_operators>(self->shared_matrices(), n);
+        if(source) basis = source(ops, progress);
+        else
+        {
+          TVF::Basis_options options;
+          options.progress = [&progress](const TVF::Spectral_progress& p) {
+            progress("computing the basis of n-fields: " + p.stage, p.fraction);
+          };
+          const int count = std::max(2, self->initial_basis_size() > 0 ? self->initial_basis_size() : 100);
+          basis = std::make_shared<const TVF::N_field_basis>(ops, count, options);
+        }
+        warm_up(basis->operators());
+      }
+      catch(const std::exception& e)
+      {
+        error = e.what();
+      }
+      {
+        std::lock_guard<std::mutex> lock(self->mutex_);
+        N_field_space& space = self->n_fields_[n];
+        if(basis)
+        {
+          space.basis = basis;
+          space.status.ready = true;
+          space.status.stage = "ready";
+          space.status.fraction = 1;
+        }
+        else
+        {
+          space.status.failed = true;
+          space.status.error = error;
+        }
+      }
+      self->changed_.notify_all();
+    }).detach();
+  }
+  changed_.wait_for(lock, timeout, [this, n] {
+    const Status& s = n_fields_.at(n).status;
+    return s.ready || s.failed;
+  });
+  return n_fields_.at(n).status;
+}
+
+std::shared_ptr<const TVF::N_field_basis> Editor_model::n_field_basis(int n) const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  const auto it = n_fields_.find(n);
+  return it == n_fields_.end() ? nullptr : it->second.basis;
 }
 
 const Outgoing& Editor_model::mesh_message() const

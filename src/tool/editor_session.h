@@ -9,7 +9,8 @@
 #ifndef TVF_TOOL_EDITOR_SESSION_H
 #define TVF_TOOL_EDITOR_SESSION_H
 
-#include <CGAL/Tangent_vector_fields/Field_constraint.h>
+#include "editor_design.h"
+
 #include <CGAL/Tangent_vector_fields/Operator_matrices.h>
 
 #include <Eigen/Core>
@@ -27,8 +28,8 @@ namespace CGAL {
 namespace Tangent_vector_fields {
 class Eigenfield_basis;
 class Hodge_solver;
-class Reduced_spline_solver;
-class Full_spline_solver;
+class N_field_basis;
+class N_field_operators;
 } // namespace Tangent_vector_fields
 } // namespace CGAL
 
@@ -51,11 +52,13 @@ struct Editor_limits
   int max_json_depth = 32;
   int max_constraints = 1000;
   int max_strokes = 200000;
+  int max_n = 12; ///< n-fields of n = 1 ... max_n
 };
 
 /// What the sessions share: the mesh, its Hodge solver and the basis, which a background
-/// job computes or loads while the first pages wait (they see its progress).
-class Editor_model
+/// job computes or loads while the first pages wait (they see its progress), and the bases of
+/// n-fields, each made by a background job when a page first asks for its n.
+class Editor_model : public std::enable_shared_from_this<Editor_model>
 {
 public:
   Editor_model(std::shared_ptr<const TVF::Operator_matrices> matrices, std::shared_ptr<TVF::Hodge_solver> hodge,
@@ -75,6 +78,19 @@ public:
   };
   /// The state of the basis, after waiting at most `timeout` for it to become ready.
   Status wait(std::chrono::milliseconds timeout) const;
+
+  /// Makes (computes or loads) the basis of n-fields for `n`, reporting progress.
+  typedef std::function<std::shared_ptr<const TVF::N_field_basis>(
+      std::shared_ptr<const TVF::N_field_operators>, const std::function<void(const std::string&, double)>&)>
+      N_field_basis_source;
+  /// How n-field bases are made (`tvf serve`: loaded from or saved next to the basis file);
+  /// by default the `initial` count of elements is computed.
+  void set_n_field_basis_source(N_field_basis_source source);
+  /// The state of the basis of n-fields, after starting its job if no page asked for this n
+  /// before and waiting at most `timeout` for it.
+  Status wait_n_field(int n, std::chrono::milliseconds timeout) const;
+  /// Null until ready.
+  std::shared_ptr<const TVF::N_field_basis> n_field_basis(int n) const;
 
   const TVF::Operator_matrices& matrices() const { return *matrices_; }
   std::shared_ptr<const TVF::Operator_matrices> shared_matrices() const { return matrices_; }
@@ -102,11 +118,19 @@ private:
   mutable std::condition_variable changed_;
   Status status_;
   std::shared_ptr<const TVF::Eigenfield_basis> basis_;
+  struct N_field_space
+  {
+    Status status;
+    std::shared_ptr<const TVF::N_field_basis> basis;
+  };
+  mutable std::map<int, N_field_space> n_fields_; // by n, guarded by mutex_
+  N_field_basis_source n_field_source_;
   mutable std::unique_ptr<Outgoing> mesh_message_;
   mutable std::once_flag mesh_once_;
 };
 
-/// One page's editing session: its constraints, tension, basis size, solver and display.
+/// One page's editing session: its design (vector field or n-field), its display, and the
+/// messages of the page.
 class Editor_session
 {
 public:
@@ -123,9 +147,9 @@ public:
 
 private:
   struct Request;
-  struct Entry;
   void dispatch(Request& request);
   void hello(Request& request);
+  void set_n(Request& request);
   void add(Request& request);
   void change(Request& request);
   void remove(Request& request);
@@ -140,42 +164,10 @@ private:
   void require_ready(const Request& request) const;
   std::string info_json() const;
   void send_field(Request& request);
-  // The full solver, caught up with the constraints (progress through `request`).
-  void sync_full(Request& request);
-  // The reduced field after a value edit of constraint `id` (already applied to the solver),
-  // from the field's cached linear response to that constraint's values; false if the
-  // constraint has no such values (a direction).
-  bool value_edit_field(int id, const TVF::Field_constraint& constraint, Eigen::VectorXd& field);
 
   std::shared_ptr<const Editor_model> model_;
-  std::unique_ptr<TVF::Reduced_spline_solver> reduced_;
-  std::unique_ptr<TVF::Full_spline_solver> full_;
-  std::map<int, Entry> entries_; // by session id
-  // Fast value edits (a drag of a vector's tip): the field is affine in one constraint's
-  // values, so with its response fields cached an edit costs O(nf) instead of a
-  // reconstruction, O(d nf).  Valid while the constraint set's structure (rows, omega,
-  // basis size) is unchanged: `structure_` counts its changes.
-  struct Value_responses
-  {
-    int id = -1;
-    long structure = -1;
-    std::vector<double> parameters;
-    Eigen::VectorXd field;     // the reduced field at `parameters`
-    Eigen::MatrixXd responses; // its change per unit change of each parameter
-  } responses_;
-  long structure_ = 0;
-  Eigen::VectorXd edited_field_; // set by a fast value edit for send_field
-  bool has_edited_field_ = false;
-  double edited_field_ms_ = 0;
-  int next_id_ = 0;
-  double omega_ = 0;
-  bool use_full_ = false;
-  struct Display
-  {
-    std::string lines = "fur", scalar = "none";
-    int strokes = 4000;
-    double length = 0.02, separation = 0.03;
-  } display_;
+  std::unique_ptr<Editor_design> design_; // null until hello
+  Display_settings display_;
 };
 
 } // namespace tvf_tool

@@ -11,6 +11,7 @@
 
 #include <CGAL/Tangent_vector_fields/Eigenfield_basis.h>
 #include <CGAL/Tangent_vector_fields/Hodge_solver.h>
+#include <CGAL/Tangent_vector_fields/N_field_basis.h>
 #include <CGAL/Tangent_vector_fields/errors.h>
 
 #include <boost/asio/ip/tcp.hpp>
@@ -219,7 +220,10 @@ int serve_command(const Arguments& args)
       "constraint edits with the new field (tangent vector field splines in a spectral basis: the\n"
       "reduced solver, and the full-resolution one on request).  Open the address it prints in a browser.\n"
       "The basis is loaded from --basis if that file exists, else computed (the N lowest eigenfields,\n"
-      "with progress on the page) and saved there, so the precomputation is done once.  Stop with Ctrl-C.");
+      "with progress on the page) and saved there, so the precomputation is done once.  The page also\n"
+      "designs n-direction fields (line fields, cross fields, ...): the basis of n-fields (N elements) is\n"
+      "made when a page first asks for its n, loaded from or saved to FILE.n<n>.tvfn beside --basis.\n"
+      "Stop with Ctrl-C.");
   command.positional("mesh", "the mesh file");
   command.group("basis").add_options()
     ("basis", po::value<std::string>()->value_name("FILE"), "the basis: loaded if the file exists, else computed and saved")
@@ -255,6 +259,31 @@ int serve_command(const Arguments& args)
   name = name.substr(name.find_last_of('/') + 1);
   auto model = std::make_shared<Editor_model>(mesh.shared_matrices(), hodge, name, mesh.bounding_box_diagonal(), size,
                                               Editor_limits());
+
+  // n-field bases: beside the basis file (FILE.n4.tvfn), loaded if there, else computed and saved.
+  model->set_n_field_basis_source([basis_path, eigenfields](std::shared_ptr<const TVF::N_field_operators> ops,
+                                                            const std::function<void(const std::string&, double)>& progress) {
+    const std::string path = basis_path.empty() ? std::string()
+                                                : basis_path.substr(0, basis_path.size() - 5) + ".n" +
+                                                      std::to_string(ops->n()) + ".tvfn";
+    if(!path.empty() && std::ifstream(path))
+    {
+      progress("loading the basis of n-fields " + path, 0);
+      return std::make_shared<const TVF::N_field_basis>(TVF::N_field_basis::load(ops, path));
+    }
+    TVF::Basis_options options;
+    options.progress = [&progress](const TVF::Spectral_progress& p) {
+      progress("computing the basis of n-fields: " + p.stage, p.fraction);
+    };
+    const int count = std::min(eigenfields + eigenfields % 2, 2 * ops->mesh().number_of_faces());
+    auto basis = std::make_shared<const TVF::N_field_basis>(ops, count, options);
+    if(!path.empty())
+    {
+      progress("saving the basis of n-fields to " + path, 1);
+      basis->save(path);
+    }
+    return basis;
+  });
 
   Server server;
   server.model = model;

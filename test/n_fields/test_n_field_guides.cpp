@@ -9,6 +9,7 @@
 #include "n_field_test_support.h"
 
 #include <CGAL/Tangent_vector_fields/N_field_basis.h>
+#include <CGAL/Tangent_vector_fields/N_field_singularities.h>
 #include <CGAL/Tangent_vector_fields/N_field_spline.h>
 #include <CGAL/Tangent_vector_fields/N_field_spline_solver.h>
 #include <CGAL/Tangent_vector_fields/curvature_direction_field.h>
@@ -431,4 +432,57 @@ TEST(CurvatureDirections, AGuideForCrossFieldsOnATorus)
     worst = std::max(worst, std::min(t, M_PI / 2 - t));
   }
   EXPECT_LT(worst, 3 * M_PI / 180);
+}
+
+TEST(NFieldSpline, FieldAfterValueEditsEqualsAFreshSolve)
+{
+  // A drag in the editor (field_after_value_edit): the n-field is affine in the values of a
+  // vector constraint and of an anchored singularity's anchor, so cached responses give the
+  // field of a fresh solve; checked through value edits of one constraint, then of another,
+  // and after a removal, reduced and full (1e-10, 1e-9: the responses are exact).
+  Mesh torus = make_torus(20, 12);
+  const auto ops = n_field_operators(torus, 4);
+  const TVF::Intrinsic_mesh& mesh = ops->mesh();
+  const auto basis = std::make_shared<const TVF::N_field_basis>(ops, 80);
+  std::vector<TVF::N_field_constraint> constraints = random_vector_constraints(mesh, 3, 71);
+  const int vertex = mesh.number_of_vertices() / 3, anchor = ops->vertex_fan(vertex).faces[0];
+  constraints.push_back(TVF::N_field_constraint::singularity_at_vertex(vertex, 1, anchor, mesh.from_frame(anchor, 1, 0)));
+  TVF::Reduced_n_field_spline_solver reduced(basis, 60);
+  TVF::Full_n_field_spline_solver full(ops);
+  const auto ids = reduced.add(constraints), full_ids = full.add(constraints);
+  std::vector<bool> present(constraints.size(), true);
+  const Eigen::VectorXd& mass = ops->masses();
+  auto check = [&](int i, const std::string& step) {
+    std::vector<TVF::N_field_constraint> current;
+    for(std::size_t j = 0; j < constraints.size(); ++j)
+      if(present[j]) current.push_back(constraints[j]);
+    TVF::Reduced_n_field_spline_solver fresh(basis, 60);
+    TVF::Full_n_field_spline_solver fresh_full(ops);
+    fresh.add(current);
+    fresh_full.add(current);
+    EXPECT_LT(relative_difference(reduced.field_after_value_edit(ids[i]), fresh.field(), mass), 1e-10) << step;
+    EXPECT_LT(relative_difference(full.field_after_value_edit(full_ids[i]), fresh_full.field(), mass), 1e-9) << step;
+  };
+  auto edit = [&](int i, const TVF::N_field_constraint& c) {
+    constraints[i] = c;
+    reduced.change(ids[i], c);
+    full.change(full_ids[i], c);
+  };
+  for(double t : {0.5, 2.0, -1.0})
+  {
+    TVF::N_field_constraint c = constraints[0];
+    c.vector = mesh.from_frame(c.face, t, 1 - t);
+    edit(0, c);
+    check(0, "vector edited to t = " + std::to_string(t));
+  }
+  TVF::N_field_constraint singularity = constraints[3];
+  singularity.vector = mesh.from_frame(anchor, 0.2, 0.7);
+  edit(3, singularity);
+  check(3, "the singularity's anchor vector edited");
+  check(0, "back to the vector after another constraint's edit");
+  EXPECT_EQ(TVF::n_field_indices(*ops, reduced.field_after_value_edit(ids[3]))[vertex], 1);
+  reduced.remove(ids[1]);
+  full.remove(full_ids[1]);
+  present[1] = false;
+  check(0, "after a removal");
 }

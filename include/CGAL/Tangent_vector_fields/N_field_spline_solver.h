@@ -71,6 +71,7 @@ public:
 protected:
   void pull_back(std::vector<Row>& rows) const override;
   double apply(const Row& row, const Eigen::VectorXd& y) const override;
+  Eigen::MatrixXd fields_of(const Eigen::MatrixXd& solutions) const override;
   double energy(const Eigen::VectorXd& a) const override;
   void add_harmonic(const Eigen::VectorXd& z, Eigen::VectorXd& a) const override;
   int space_dimension() const override { return d_; }

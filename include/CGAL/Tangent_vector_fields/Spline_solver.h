@@ -127,6 +127,22 @@ public:
   /// as much as a solve).
   const Spline_report& report() const;
 
+  /// The row values of constraint `id` as the solver holds them (`constraint_values`).
+  /// \throws Invalid_input for an unknown id.
+  Eigen::VectorXd values(Constraint_id id) const;
+  /// The change of `solution` per unit change of each row value of constraint `id`
+  /// (columns, in the solver's space: coefficients or frame coordinates).  The spline is
+  /// affine in the values: solution(c + t e_k) = solution(c) + t column k, exactly.
+  /// \throws Invalid_input for an unknown id.
+  Eigen::MatrixXd value_response(Constraint_id id) const;
+  /// `field()` while only the values of constraint `id` change (a drag).  The first call
+  /// after any other change of the constraint set (or of another constraint's values)
+  /// reconstructs the field and its response to each of `id`'s values in one pass (1 + rows
+  /// fields: about the cost of `field()` for a basis, which reads its eigenfunctions once);
+  /// later calls cost one product of the responses with the change of the values,
+  /// `O(rows 2nf)`, instead of a reconstruction.  Equal to `field()` up to rounding.
+  Eigen::VectorXd field_after_value_edit(Constraint_id id) const;
+
 protected:
   Basic_spline_solver(std::shared_ptr<const Operators> operators, int harmonic_dimension,
                 const Spline_options& options);
@@ -159,6 +175,10 @@ protected:
   /// plus a combination of the pull-backs.
   virtual const Eigen::VectorXd& unconstrained_minimiser() const { return no_offset_; }
 
+  /// The fields (frame or power coordinates, `2nf` rows) of solutions of the solver's
+  /// space (columns): the identity for full-resolution solvers, the basis for reduced ones.
+  virtual Eigen::MatrixXd fields_of(const Eigen::MatrixXd& solutions) const { return solutions; }
+
   /// The solution in the solver's space (coefficients or frame coordinates).
   const Eigen::VectorXd& solution() const;
 
@@ -185,6 +205,17 @@ private:
   std::vector<Row> rows_;
   Constraint_id next_id_ = 0;
   std::unique_ptr<internal::Constraint_system> system_;
+  // Counts changes of the constraint set other than value edits of `edit_cache_.id`.
+  long version_ = 0;
+  struct Value_edit_cache
+  {
+    Constraint_id id = -1;
+    long version = -1;
+    Eigen::VectorXd values;    // the constraint's values when the field was made
+    Eigen::VectorXd field;     // field() at those values
+    Eigen::MatrixXd responses; // its change per unit change of each value
+  };
+  mutable Value_edit_cache edit_cache_;
   int harmonic_dimension_;
   mutable bool solved_ = false, reported_ = false;
   mutable Eigen::VectorXd solution_;

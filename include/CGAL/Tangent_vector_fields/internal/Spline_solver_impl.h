@@ -122,6 +122,7 @@ void Basic_spline_solver<Constraint, Operators>::insert(const std::vector<Constr
     entries_[ids[i]] = Entry{constraints[i], row, count};
     row += count;
   }
+  ++version_;
   solved_ = false;
 }
 
@@ -138,6 +139,7 @@ void Basic_spline_solver<Constraint, Operators>::change(Constraint_id id, const 
     const std::vector<double> values = constraint_values(*operators_, constraint);
     for(int k = 0; k < entry.row_count; ++k) rows_[entry.first_row + k].row.value = values[k];
     entry.constraint = constraint;
+    if(id != edit_cache_.id) ++version_; // the cached field was made with the old values
     solved_ = false;
     return;
   }
@@ -165,6 +167,7 @@ void Basic_spline_solver<Constraint, Operators>::remove(Constraint_id id)
   entries_.erase(it);
   for(auto& e : entries_)
     if(e.second.first_row > first) e.second.first_row -= count;
+  ++version_;
   solved_ = false;
 }
 
@@ -174,6 +177,7 @@ void Basic_spline_solver<Constraint, Operators>::clear()
   entries_.clear();
   rows_.clear();
   system_ = std::make_unique<internal::Constraint_system>(harmonic_dimension_, harmonic_scale_, harmonic_penalty_);
+  ++version_;
   solved_ = false;
 }
 
@@ -242,6 +246,63 @@ const Spline_report& Basic_spline_solver<Constraint, Operators>::report() const
   if(!solved_) solve();
   if(!reported_) make_report();
   return report_;
+}
+
+template <class Constraint, class Operators>
+Eigen::VectorXd Basic_spline_solver<Constraint, Operators>::values(Constraint_id id) const
+{
+  auto it = entries_.find(id);
+  if(it == entries_.end()) throw Invalid_input("no constraint with id " + std::to_string(id));
+  Eigen::VectorXd c(it->second.row_count);
+  for(int k = 0; k < c.size(); ++k) c[k] = rows_[it->second.first_row + k].row.value;
+  return c;
+}
+
+template <class Constraint, class Operators>
+Eigen::MatrixXd Basic_spline_solver<Constraint, Operators>::value_response(Constraint_id id) const
+{
+  auto it = entries_.find(id);
+  if(it == entries_.end()) throw Invalid_input("no constraint with id " + std::to_string(id));
+  // The solution is x0 + sum_i mu_i y_i + harmonic(z) with (mu, z) linear in the
+  // right-hand side c - C x0: a unit change of row value k is the solve for e_k.
+  const int n = number_of_rows();
+  Eigen::MatrixXd response = Eigen::MatrixXd::Zero(space_dimension(), it->second.row_count);
+  for(int k = 0; k < it->second.row_count; ++k)
+  {
+    Eigen::VectorXd c = Eigen::VectorXd::Zero(n), mu, z;
+    c[it->second.first_row + k] = 1;
+    system_->solve(c, mu, z);
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(space_dimension());
+    for(int i = 0; i < n; ++i) x += mu[i] * rows_[i].y;
+    if(z.size() > 0) add_harmonic(z, x);
+    response.col(k) = x;
+  }
+  return response;
+}
+
+template <class Constraint, class Operators>
+Eigen::VectorXd Basic_spline_solver<Constraint, Operators>::field_after_value_edit(Constraint_id id) const
+{
+  const Eigen::VectorXd c = values(id);
+  Value_edit_cache& cache = edit_cache_;
+  if(cache.id != id || cache.version != version_)
+  {
+    // One pass over the basis for the field and its responses.
+    const Eigen::MatrixXd response = value_response(id);
+    Eigen::MatrixXd solutions(space_dimension(), 1 + response.cols());
+    solutions.col(0) = solution();
+    solutions.rightCols(response.cols()) = response;
+    const Eigen::MatrixXd x = fields_of(solutions);
+    cache.id = id;
+    cache.version = version_;
+    cache.values = c;
+    cache.field = x.col(0);
+    cache.responses = x.rightCols(response.cols());
+    return cache.field;
+  }
+  Eigen::VectorXd x = cache.field + cache.responses * (c - cache.values);
+  if(!x.allFinite()) throw Numerical_failure("the spline solve produced non-finite values");
+  return x;
 }
 
 template <class Constraint, class Operators>

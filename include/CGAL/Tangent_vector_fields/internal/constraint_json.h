@@ -17,11 +17,17 @@
 #include <array>
 #include <initializer_list>
 #include <iosfwd>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace CGAL {
 namespace Tangent_vector_fields {
+
+struct N_field_constraint;
+struct N_field_constraint_file;
+class N_field_operators;
+
 namespace internal {
 
 typedef nlohmann::json Json;
@@ -71,6 +77,13 @@ Field_constraint parse_constraint(const Json& node, const std::string& name, con
 
 /// A whole constraint file object.  \throws Invalid_input
 Constraint_file parse_constraint_file(const Json& root, const Operator_matrices& operators);
+
+/// One entry of an n-field constraint file's `"constraints"`, checked against `operators`
+/// (its rows can be made); errors start with `name`.  \throws Invalid_input
+N_field_constraint parse_n_field_constraint(const Json& node, const std::string& name, const N_field_operators& operators);
+
+/// A whole n-field constraint file object.  \throws Invalid_input
+N_field_constraint_file parse_n_field_constraint_file(const Json& root, std::shared_ptr<const Operator_matrices> operators);
 
 } // namespace internal
 } // namespace Tangent_vector_fields

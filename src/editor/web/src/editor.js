@@ -19,6 +19,7 @@ export class Editor {
     this.info = null;
     this.mesh = null;
     this.field = null;
+    this.n = 1; // the design's n: 1 for vector fields
     this.display = { lines: 'fur', strokes: 4000, length: 0.03, separation: 0.02, colour: 'magnitude' };
     this.queue = new RequestQueue((message) => {
       const sentAt = performance.now();
@@ -64,6 +65,7 @@ export class Editor {
         break;
       case 'info':
         this.info = message;
+        this.n = message.n ?? 1;
         this.display = { ...this.display, ...message.display };
         this.display.colour = message.display?.scalar && message.display.scalar !== 'none'
           ? message.display.scalar : 'magnitude';
@@ -116,9 +118,12 @@ export class Editor {
     const { header, arrays } = this.field;
     const colour = this.display.colour;
     if (colour === 'magnitude') this.viewer.colourByMagnitude(arrays.vectors, header.magnitude_max);
-    else if ((colour === 'divergence' || colour === 'curl') && arrays.scalar) {
+    else if (colour === 'energy' && arrays.scalar && header.scalar_on === 'faces') {
+      this.viewer.colourByFaceEnergy(arrays.scalar, header.scalar_range || [0, 0]);
+    } else if ((colour === 'divergence' || colour === 'curl') && arrays.scalar) {
       this.viewer.colourByScalar(arrays.scalar, header.scalar_range || [0, 0]);
     } else this.viewer.colourUniform();
+    this.viewer.setSingularities(arrays.singular_vertices, arrays.singular_indices, header.n || 1);
     this.viewer.setLines(arrays.lines, colour === 'magnitude', this.display.lines === 'fur');
   }
 
@@ -153,7 +158,7 @@ export class Editor {
   }
 
   newHandle(constraint, anchor) {
-    const handle = new Handle(constraint, anchor);
+    const handle = new Handle(constraint, anchor, this.n);
     this.handles.add(handle);
     this.viewer.handles.add(handle.group);
     this.redraw(handle);
@@ -252,11 +257,20 @@ export class Editor {
       key: 'display',
       build: () => {
         const d = this.display;
-        const scalar = d.colour === 'divergence' || d.colour === 'curl' ? d.colour : 'none';
+        const scalar = ['divergence', 'curl', 'energy'].includes(d.colour) ? d.colour : 'none';
         return { type: 'set_display', lines: d.lines, strokes: d.strokes, length: d.length,
           separation: d.separation, scalar };
       },
     });
+  }
+
+  // Another kind of field: n = 1 vector fields, n > 1 n-direction fields.  The constraints of
+  // the old kind do not carry over: their handles go at once.
+  setN(n) {
+    this.select(null);
+    for (const h of [...this.handles]) this.dispose(h);
+    return this.queue.push({ key: 'n', build: () => ({ type: 'set_n', n }),
+      onError: () => this.ui.showN(this.n) });
   }
 
   ping() {

@@ -17,14 +17,17 @@ export const COLOURS = {
   vortex_ccw: 0x8e24aa,
   vortex_cw: 0x00897b,
   boundary_alignment: 0x00bcd4,
+  singularity_positive: 0xc62828,
+  singularity_negative: 0x1565c0,
 };
 
 // What the page knows of one constraint: the constraint as last sent (`constraint`), as
 // last accepted by the server (`confirmed`), its server id (null until `added`), and where
 // the user put it (`anchor`: vectors and directions only have a face in the file format).
 export class Handle {
-  constructor(constraint, anchor = null) {
+  constructor(constraint, anchor = null, n = 1) {
     this.id = null;
+    this.n = n; // the field's n: vectors of n-fields are drawn n-fold
     this.constraint = constraint;
     this.confirmed = null;
     this.anchor = anchor;
@@ -36,6 +39,7 @@ export class Handle {
     const c = this.constraint;
     if (c.type === 'divergence') return c.value >= 0 ? 'source' : 'sink';
     if (c.type === 'curl') return c.value >= 0 ? 'vortex_ccw' : 'vortex_cw';
+    if (c.type === 'singularity') return c.index >= 0 ? 'singularity_positive' : 'singularity_negative';
     return c.type;
   }
 
@@ -45,6 +49,9 @@ export class Handle {
     const names = { source: 'source', sink: 'sink', vortex_ccw: 'vortex (counter-clockwise)',
       vortex_cw: 'vortex (clockwise)', vector: 'vector', direction: 'direction',
       boundary_alignment: 'boundary alignment' };
+    if (c.type === 'singularity') {
+      return `singularity ${c.index > 0 ? '+' : ''}${c.index}/${this.n} ${id} at vertex ${c.vertex}`;
+    }
     const where = c.face !== undefined ? `face ${c.face}` : c.vertex !== undefined ? `vertex ${c.vertex}` : `edge ${c.edge}`;
     return `${names[this.colourName()]} ${id} at ${where}`;
   }
@@ -59,7 +66,7 @@ function placeOf(handle, viewer) {
     const point = viewer.vertexPosition(i).add(viewer.vertexPosition(j)).multiplyScalar(0.5);
     return { point, normal: viewer.vertexNormal(i).add(viewer.vertexNormal(j)).normalize() };
   }
-  if (c.vertex !== undefined && c.face === undefined) {
+  if (c.vertex !== undefined && (c.face === undefined || c.type === 'singularity')) {
     return { point: viewer.vertexPosition(c.vertex), normal: viewer.vertexNormal(c.vertex) };
   }
   const normal = viewer.faceNormal(c.face);
@@ -130,6 +137,13 @@ export function drawHandle(handle, viewer, selected) {
       stretch(shaft, start, tip, shaftRadius);
       group.add(shaft, arrowhead(start, tip));
       if (c.type === 'direction') group.add(arrowhead(tip, start));
+      // An n-field's other n - 1 vectors, turned by 2 pi j / n in the face's plane: thin, not grabbable.
+      for (let j = 1; j < handle.n; ++j) {
+        const w = v.clone().applyAxisAngle(place.normal, (2 * Math.PI * j) / handle.n);
+        const other = new THREE.Mesh(CYLINDER, material);
+        stretch(other, base, base.clone().add(w), 0.5 * shaftRadius);
+        group.add(other);
+      }
     }
     const anchor = part(SPHERE, material, handle, 'anchor');
     anchor.position.copy(base);
@@ -161,6 +175,16 @@ export function drawHandle(handle, viewer, selected) {
         0.22 * radius);
       group.add(ring, head);
     }
+  } else if (c.type === 'singularity') {
+    // A ball at the vertex in a ring: the ring's colour tells the sign of the index.
+    const ball = part(SPHERE, material, handle, 'anchor');
+    ball.position.copy(base);
+    ball.scale.setScalar(0.012 * size * grow);
+    const ring = part(RING, material, handle, 'anchor');
+    ring.position.copy(base);
+    ring.quaternion.setFromUnitVectors(new THREE.Vector3(0, 0, 1), place.normal);
+    ring.scale.setScalar(0.024 * size * (1 + 0.3 * (Math.abs(c.index) - 1)));
+    group.add(ball, ring);
   } else if (c.type === 'boundary_alignment') {
     const mesh = viewer.mesh;
     const a = viewer.vertexPosition(mesh.edges[2 * c.edge]).addScaledVector(place.normal, 0.002 * size);

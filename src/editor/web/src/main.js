@@ -31,6 +31,8 @@ function request(message) {
       break;
     case 'clear':
       return editor.clear();
+    case 'set_n':
+      return editor.setN(message.n);
     case 'load':
       return editor.load(message.file);
     case 'set_display': {
@@ -88,6 +90,13 @@ window.tvfEditor = {
     return { anchor: canvasPoint(base), tip: v ? canvasPoint(new THREE.Vector3().fromArray(v).add(base)) : null };
   },
   setTool: (tool) => tools.setTool(tool),
+  // Screen position (CSS pixels, relative to the canvas) of vertex v, and whether it is in view.
+  projectVertex(v) {
+    const p = canvasPoint(viewer.vertexPosition(v));
+    const rect = viewer.canvas.getBoundingClientRect();
+    const hit = viewer.pick(rect.left + p.x, rect.top + p.y);
+    return { ...p, visible: hit !== null && hit.point.distanceTo(viewer.vertexPosition(v)) < 0.02 * viewer.diagonal };
+  },
   // Mean time (ms) of n frames of the current scene, each finished on the GPU.
   renderTime(n = 10) {
     const start = performance.now();

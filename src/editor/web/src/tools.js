@@ -13,6 +13,7 @@ export class Tools {
     this.tool = 'select';
     this.vortexSign = 1; // +1: counter-clockwise
     this.strength = 1;
+    this.singularityIndex = 1; // k: the index of a new singularity is k / n
     this.drag = null;
     // Capture on the container: before the orbit controls' own listener on the canvas.
     container.addEventListener('pointerdown', (e) => this.down(e), { capture: true });
@@ -62,6 +63,16 @@ export class Tools {
       case 'vortex': {
         const type = this.tool === 'vortex' ? 'curl' : 'divergence';
         const { handle } = this.editor.add({ type, face: hit.face, point, value: this.value(this.tool) });
+        this.editor.select(handle);
+        this.drag = { kind: 'move', handle, x, y };
+        return this.take(e);
+      }
+      case 'singularity': {
+        if (this.editor.n === 1) {
+          this.editor.ui.error('singularities are constraints of n-direction fields: choose a line or cross field under Field');
+          return this.take(e);
+        }
+        const { handle } = this.editor.add(this.singularityConstraint(hit, this.singularityIndex));
         this.editor.select(handle);
         this.drag = { kind: 'move', handle, x, y };
         return this.take(e);
@@ -143,7 +154,8 @@ export class Tools {
       e.preventDefault();
     } else if (e.key === 'Escape') this.editor.select(null);
     else {
-      const tool = { s: 'select', v: 'vector', d: 'direction', o: 'source', i: 'sink', c: 'vortex', b: 'boundary' }[e.key];
+      const tool = { s: 'select', v: 'vector', d: 'direction', o: 'source', i: 'sink', c: 'vortex', b: 'boundary',
+        x: 'singularity' }[e.key];
       if (tool && !e.ctrlKey && !e.metaKey && !e.altKey) this.setTool(tool);
     }
   }
@@ -177,6 +189,30 @@ export class Tools {
     return v.setLength(0.1 * this.viewer.diagonal);
   }
 
+  // The vertex of face `face` nearest to `point`.
+  nearestVertex(face, point) {
+    const triangles = this.editor.mesh.triangles;
+    let best = triangles[3 * face];
+    for (let k = 1; k < 3; ++k) {
+      const v = triangles[3 * face + k];
+      if (this.viewer.vertexPosition(v).distanceTo(point) < this.viewer.vertexPosition(best).distanceTo(point)) best = v;
+    }
+    return best;
+  }
+
+  // A singularity of index k / n at the vertex nearest to the hit, anchored in the hit face by
+  // the field's vector there (so the field keeps its strength and orientation around it).
+  singularityConstraint(hit, index, vector = null) {
+    const v = vector ? new THREE.Vector3().fromArray(vector) : this.defaultVector(hit.face);
+    const normal = this.viewer.faceNormal(hit.face);
+    const length = v.length();
+    v.addScaledVector(normal, -v.dot(normal));
+    if (v.length() > 0) v.setLength(length);
+    else v.copy(this.defaultVector(hit.face));
+    return { type: 'singularity', vertex: this.nearestVertex(hit.face, hit.point), index, face: hit.face,
+      vector: v.toArray() };
+  }
+
   // Moves a handle to the surface point under the mouse.
   moveHandle(handle, e) {
     const hit = this.viewer.pick(e.clientX, e.clientY);
@@ -200,6 +236,9 @@ export class Tools {
     } else if (c.type === 'divergence' || c.type === 'curl') {
       next = { type: c.type, face: hit.face, point: hit.point.toArray(), value: c.value };
       if (c.weight !== undefined) next.weight = c.weight;
+    } else if (c.type === 'singularity') {
+      next = this.singularityConstraint(hit, c.index, c.vector);
+      if (next.vertex === c.vertex) return; // still the same vertex: nothing to send
     } else if (c.type === 'boundary_alignment') {
       const edge = this.nearestBoundaryEdge(hit.point);
       if (edge === null || edge === c.edge) return;

@@ -11,6 +11,13 @@ function number(x, digits = 3) {
   return a >= 1e4 || a < 1e-3 ? x.toExponential(digits - 1) : x.toPrecision(digits);
 }
 
+// The tools and colours of each kind of field: 'vector' (n = 1) and 'n' (n > 1).
+const N_TOOLS = {
+  select: ['vector', 'n'], vector: ['vector', 'n'], direction: ['vector', 'n'], source: ['vector'], sink: ['vector'],
+  vortex: ['vector'], boundary: ['vector'], singularity: ['n'],
+};
+const N_COLOURS = { magnitude: ['vector', 'n'], divergence: ['vector'], curl: ['vector'], energy: ['n'], none: ['vector', 'n'] };
+
 // Failures are already shown by the status line; a promise nobody awaits must not throw.
 const quiet = (promise) => promise.catch(() => {});
 
@@ -32,7 +39,22 @@ export class Panel {
         button.classList.toggle('active', button.dataset.tool === tool);
       }
       $('vortex-row').style.display = tool === 'vortex' ? '' : 'none';
+      $('singularity-row').style.display = tool === 'singularity' ? '' : 'none';
     };
+    $('n').addEventListener('change', () => {
+      const n = Number($('n').value);
+      this.showN(n);
+      if (!N_TOOLS[tools.tool]?.includes(n === 1 ? 'vector' : 'n')) tools.setTool('select');
+      quiet(editor.setN(n));
+    });
+    $('singularity-index').addEventListener('change', () => {
+      tools.singularityIndex = Number($('singularity-index').value);
+      this.showN(editor.n);
+      const h = editor.selected;
+      if (h && h.constraint.type === 'singularity') {
+        quiet(editor.change(h, { ...h.constraint, index: tools.singularityIndex }));
+      }
+    });
     tools.setTool('select');
     for (const radio of document.querySelectorAll('input[name="vortex-sign"]')) {
       radio.addEventListener('change', () => {
@@ -141,14 +163,29 @@ export class Panel {
     }
   }
 
+  // The controls of the kind of field the session designs.
+  showN(n) {
+    const kind = n === 1 ? 'vector' : 'n';
+    $('n').value = String(n);
+    for (const button of $('tools').querySelectorAll('button')) {
+      button.style.display = N_TOOLS[button.dataset.tool]?.includes(kind) ? '' : 'none';
+    }
+    for (const option of $('colour').options) option.hidden = !N_COLOURS[option.value]?.includes(kind);
+    const k = Number($('singularity-index').value);
+    $('singularity-fraction').textContent = n > 1 ? `index ${k > 0 ? '+' : ''}${k}/${n}` : '';
+    if (n === 1) $('singularities').textContent = '';
+  }
+
   info(info) {
     const m = info.mesh;
+    this.showN(info.n ?? 1);
     $('mesh-name').textContent = m.name;
     $('mesh-info').innerHTML = `${m.vertices} vertices, ${m.faces} faces, ${m.edges} edges<br>` +
       `genus ${m.genus}, ${m.boundary_loops} boundary loop${m.boundary_loops === 1 ? '' : 's'}, ` +
       `${m.components} component${m.components === 1 ? '' : 's'}<br>` +
       `area ${number(m.area)}, diagonal ${number(m.diagonal)}, mean edge ${number(m.mean_edge_length)}<br>` +
-      `basis: ${info.basis.available} eigenfields (${info.basis.harmonic} harmonic)`;
+      ((info.n ?? 1) === 1 ? `basis: ${info.basis.available} eigenfields (${info.basis.harmonic} harmonic)`
+        : `basis of ${info.n}-fields: ${info.basis.available} elements (${info.basis.harmonic} parallel), order ${info.order}`);
     $('basis-size').max = String(info.basis.available);
     $('basis-size').value = String(info.basis.size);
     $('basis-available').textContent = `of ${info.basis.available}`;
@@ -212,7 +249,25 @@ export class Panel {
     for (const w of report.warnings || []) lines.push(`warning: ${w}`);
     $('field-info').innerHTML = lines.map((l) => `<div>${l.replace(/</g, '&lt;')}</div>`).join('');
     this.legend(header);
+    this.singularities(header);
     this.status(`ready · ${(header.ids || []).length} constraint${(header.ids || []).length === 1 ? '' : 's'}`);
+  }
+
+  // n-fields: how many singular vertices of each index, and their sum (Poincare-Hopf).
+  singularities(header) {
+    const n = header.n || 1;
+    if (n === 1) return;
+    const indices = this.editor.field?.arrays.singular_indices || [];
+    const count = new Map();
+    let sum = 0;
+    for (const k of indices) {
+      count.set(k, (count.get(k) || 0) + 1);
+      sum += k;
+    }
+    const parts = [...count.keys()].sort((a, b) => b - a)
+      .map((k) => `<span class="${k > 0 ? 'positive' : 'negative'}">${k > 0 ? '+' : ''}${k}/${n}</span> × ${count.get(k)}`);
+    $('singularities').innerHTML = `${indices.length} singular vertices${parts.length ? ': ' + parts.join(', ') : ''}` +
+      `; indices sum to ${sum}/${n}`;
   }
 
   legend(header) {
@@ -223,9 +278,12 @@ export class Panel {
       return;
     }
     legend.hidden = false;
-    $('legend-name').textContent = colour === 'magnitude' ? '|v|' : colour;
-    $('legend-bar').style.background = cssGradient(colour === 'magnitude' ? 'magnitude' : 'signed');
-    if (colour === 'magnitude') {
+    $('legend-name').textContent = colour === 'magnitude' ? '|v|' : colour === 'energy' ? 'energy density' : colour;
+    $('legend-bar').style.background = cssGradient(colour === 'magnitude' || colour === 'energy' ? 'magnitude' : 'signed');
+    if (colour === 'energy') {
+      $('legend-min').textContent = number(1e-4 * header.scalar_range[1]);
+      $('legend-max').textContent = `${number(header.scalar_range[1])} (log)`;
+    } else if (colour === 'magnitude') {
       $('legend-min').textContent = '0';
       $('legend-max').textContent = number(header.magnitude_max);
     } else {
@@ -246,6 +304,7 @@ export class Panel {
     const v = c.vector || c.direction;
     if (v) detail = `(${v.map((x) => number(x)).join(', ')}), length ${number(Math.hypot(...v))}`;
     if (c.value !== undefined) detail = `value ${number(c.value)}`;
+    if (c.type === 'singularity') detail = '';
     $('selection').textContent = `${handle.describe()} ${detail}`;
   }
 

@@ -5,6 +5,7 @@ import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { VIRIDIS, COOL_WARM, colourAt } from './colormap.js';
 
 const GREY = [0.55, 0.55, 0.55];
+const MARKER = new THREE.SphereGeometry(1, 14, 10);
 
 // Whether WebGL runs on a software rasterizer (headless browsers, machines without a GPU).
 function softwareRendering() {
@@ -43,6 +44,10 @@ export class Viewer {
     this.lines = new THREE.LineSegments(new THREE.BufferGeometry(), this.lineMaterial);
     this.lines.frustumCulled = false;
     this.scene.add(this.lines);
+
+    // Singular vertices of n-fields: one marker each, coloured by the sign of the index.
+    this.singular = new THREE.Group();
+    this.scene.add(this.singular);
 
     this.dirty = true;
     this.holdUntil = 0;
@@ -219,6 +224,58 @@ export class Viewer {
       colourAt(COOL_WARM, 0.5 + scalar[triangles[corner]] * scale, out, 3 * corner);
     }
     attribute.needsUpdate = true;
+    this.requestRender();
+  }
+
+  // One value per face, >= 0 (the smoothness energy density of an n-field): log scale over
+  // four decades below the largest, since it peaks at singularities.
+  colourByFaceEnergy(scalar, range) {
+    const attribute = this.colours();
+    const out = attribute.array;
+    const max = range[1] > 0 ? range[1] : 1;
+    const nf = scalar.length;
+    for (let f = 0; f < nf; ++f) {
+      const t = scalar[f] > 0 ? 1 + Math.log10(scalar[f] / max) / 4 : 0;
+      colourAt(VIRIDIS, Math.max(0, t), out, 9 * f);
+      out.copyWithin(9 * f + 3, 9 * f, 9 * f + 3);
+      out.copyWithin(9 * f + 6, 9 * f, 9 * f + 3);
+    }
+    attribute.needsUpdate = true;
+    this.requestRender();
+  }
+
+  // Markers of the singular vertices (n-fields): red for positive indices k / n, blue for
+  // negative ones, larger for |k| > 1.  vertices, indices: the field message's arrays.
+  setSingularities(vertices, indices, n) {
+    for (const child of this.singular.children) child.material.dispose();
+    this.singular.clear();
+    this.singularInfo = [];
+    if (!vertices || vertices.length === 0 || !this.mesh) {
+      this.requestRender();
+      return;
+    }
+    const geometry = MARKER;
+    const lift = 0.003 * this.diagonal;
+    for (const sign of [1, -1]) {
+      const chosen = [];
+      for (let i = 0; i < vertices.length; ++i) if (Math.sign(indices[i]) === sign) chosen.push(i);
+      if (chosen.length === 0) continue;
+      const material = new THREE.MeshLambertMaterial({ color: sign > 0 ? 0xd32f2f : 0x1565c0,
+        emissive: sign > 0 ? 0x5a1010 : 0x0a2a5a });
+      const markers = new THREE.InstancedMesh(geometry, material, chosen.length);
+      const m = new THREE.Matrix4();
+      chosen.forEach((i, j) => {
+        const v = vertices[i];
+        const p = this.vertexPosition(v).addScaledVector(this.vertexNormal(v), lift);
+        const size = 0.006 * this.diagonal * (1 + 0.35 * (Math.abs(indices[i]) - 1));
+        m.makeScale(size, size, size).setPosition(p);
+        markers.setMatrixAt(j, m);
+      });
+      markers.instanceMatrix.needsUpdate = true;
+      markers.frustumCulled = false;
+      this.singular.add(markers);
+    }
+    this.singularInfo = Array.from(vertices, (v, i) => ({ vertex: v, index: indices[i], n }));
     this.requestRender();
   }
 

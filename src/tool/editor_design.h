@@ -1,0 +1,114 @@
+// Copyright (c) 2026 The Tangent_vector_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// What an editing session designs: vector fields (n = 1: tangent vector field splines with
+// vectors, directions, divergences and curls) or n-direction fields (n > 1: n-field splines
+// with vectors, directions and singularities).  The session handles messages the same way for
+// both; an `Editor_design` holds the constraints and the reduced (and, on request, the full)
+// solver of one kind, and turns its field into what the page draws.
+
+#ifndef TVF_TOOL_EDITOR_DESIGN_H
+#define TVF_TOOL_EDITOR_DESIGN_H
+
+#include <CGAL/Tangent_vector_fields/Spline_solver.h>
+#include <CGAL/Tangent_vector_fields/Streamlines.h>
+#include <CGAL/Tangent_vector_fields/internal/constraint_json.h>
+
+#include <Eigen/Core>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace tvf_tool {
+
+namespace TVF = CGAL::Tangent_vector_fields;
+class Editor_model;
+
+/// Called while the full solver works: stage and fraction.
+typedef std::function<void(const std::string&, double)> Design_progress;
+
+/// Milliseconds an edit spent in the reduced and the full solver.
+struct Edit_time
+{
+  double reduced_ms = 0, full_ms = 0;
+};
+
+/// The display settings of a session (`set_display`).
+struct Display_settings
+{
+  std::string lines = "fur", scalar = "none";
+  int strokes = 4000;
+  double length = 0.02, separation = 0.03;
+};
+
+/// The field a session shows, with what the page reports about it.
+struct Design_field
+{
+  Eigen::VectorXd x; ///< frame coordinates (n = 1) or the power representation (n > 1), `2nf`
+  TVF::Spline_report report;
+  bool full = false;
+  double solve_ms = 0, reconstruct_ms = 0, full_ms = 0;
+  double difference = -1; ///< full solver on: |x_reduced - x_full| / |x_full| in MX
+};
+
+class Editor_design
+{
+public:
+  virtual ~Editor_design() = default;
+
+  /// 1 for vector fields.
+  virtual int n() const = 0;
+  /// The energy's order m (n-fields; 2 for vector fields: E_B).
+  virtual int order() const = 0;
+  virtual int available() const = 0;   ///< elements of the basis
+  virtual int basis_size() const = 0;  ///< elements the reduced solver uses
+  virtual int kernel_dimension() const = 0; ///< harmonic (n = 1) or parallel fields
+  virtual double omega() const = 0;
+  virtual bool full() const = 0;
+  /// Session ids of the constraints, increasing.
+  virtual std::vector<int> ids() const = 0;
+
+  // Edits; each leaves the design unchanged if it throws (Message_error, Invalid_input).
+  virtual int add(const TVF::internal::Json& constraint, const Design_progress& progress, Edit_time& time) = 0;
+  virtual void change(int id, const TVF::internal::Json& constraint, const Design_progress& progress, Edit_time& time) = 0;
+  virtual void remove(int id) = 0;
+  virtual void clear() = 0;
+  /// A whole constraint file object of the design's kind; all or nothing.  Returns the new ids
+  /// in file order.
+  virtual std::vector<int> load(const TVF::internal::Json& file, const Design_progress& progress) = 0;
+  /// The constraint file of the session (JSON text).
+  virtual std::string save() const = 0;
+  virtual void set_omega(double omega, const Design_progress& progress) = 0;
+  virtual void set_basis_size(int size) = 0;
+  /// Full solver on (pulls every constraint back, with progress) or off.
+  virtual void set_full(bool full, const Design_progress& progress) = 0;
+
+  /// The field to show (after a value edit of one constraint: from its cached response).
+  virtual Design_field field() = 0;
+
+  // What the page draws of a field `x` of this design.
+  /// The field as 3D vectors per face (n-fields: the first of the n vectors), and its largest length.
+  virtual std::vector<float> vectors(const Eigen::VectorXd& x, double& magnitude_max) const = 0;
+  /// "divergence", "curl" (vector fields, per vertex) or "energy" (n-fields: the first-order
+  /// energy density, per face); `Message_error` for a scalar the design does not have.
+  virtual Eigen::VectorXd scalar(const std::string& kind, const Eigen::VectorXd& x) const = 0;
+  /// Whether `kind` is one of the design's scalars (checked by `set_display`).
+  virtual bool has_scalar(const std::string& kind) const = 0;
+  /// Fur (n-fields: strokes along every branch) or evenly spaced streamlines (every family).
+  virtual std::vector<TVF::Streamline> lines(const Eigen::VectorXd& x, const Display_settings& display) const = 0;
+  /// `(vertex, k)` of every vertex where the field has index `k / n != 0` (n-fields only).
+  virtual std::vector<std::pair<int, int>> singularities(const Eigen::VectorXd& x) const = 0;
+};
+
+/// Vector-field splines over the model's basis.
+std::unique_ptr<Editor_design> make_vector_design(std::shared_ptr<const Editor_model> model, int basis_size, double omega);
+/// n-field splines of order `order` over the model's basis of n-fields (`Editor_model::n_field_basis`).
+std::unique_ptr<Editor_design> make_n_field_design(std::shared_ptr<const Editor_model> model, int n, int order,
+                                                   int basis_size, double omega);
+
+} // namespace tvf_tool
+
+#endif
