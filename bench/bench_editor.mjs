@@ -9,7 +9,12 @@
 //
 //   node bench/bench_editor.mjs --tvf build/tvf --mesh M.off --basis M.tvfb --constraints C.json
 //        --node-modules build/editor/node_modules [--size 1000] [--sizes 250,500,1000]
-//        [--edits 30] [--full yes] [--chromium /usr/bin/chromium] [--web-root DIR]
+//        [--edits 30] [--full yes] [--chromium /usr/bin/chromium] [--web-root DIR] [--n N]
+//
+// With --n N the session designs n-direction fields: the basis of n-fields is loaded from
+// M.n<N>.tvfn beside --basis (computed and saved there if missing), --constraints is an n-field
+// constraint file, the displays are n-fold glyphs, hatching and the energy density, and one more
+// row places and removes a singularity (an edit with new rows).
 //
 // The meshes and constraint sets of the design benchmark: `bench_design --write-meshes DIR`.
 import { createRequire } from 'node:module';
@@ -80,6 +85,14 @@ async function main() {
     console.log(`Chromium ${context.browser() ? context.browser().version() : ''} headless, software GL ` +
       `(--disable-gpu); server and browser on this machine (loopback).\n`);
 
+    const n = Number(o.n || 1);
+    if (n > 1) {
+      const t0 = Date.now();
+      await page.evaluate((n) => window.tvfEditor.request({ type: 'set_n', n }), n);
+      const nInfo = await page.evaluate(() => window.tvfEditor.info());
+      console.log(`n = ${n}: basis of ${nInfo.basis.available} n-fields ready ${((Date.now() - t0) / 1000).toFixed(0)} s ` +
+        `after asking; the session uses ${nInfo.basis.size}.\n`);
+    }
     const file = JSON.parse(fs.readFileSync(o.constraints, 'utf8'));
     await page.evaluate((file) => window.tvfEditor.request({ type: 'load', file }), file);
     const constraints = await page.evaluate(() => window.tvfEditor.constraints());
@@ -89,12 +102,17 @@ async function main() {
       `to other faces (a drag of its anchor: new rows, one new pull-back).  Medians of ${o.edits} edits ` +
       `(p90 of the total in brackets), milliseconds.\n`);
 
-    const displays = [
+    const displays = n === 1 ? [
       ['vectors only (no lines, magnitude colours)', { lines: 'none', scalar: 'none' }],
       ['fur, 4000 strokes', { lines: 'fur', strokes: 4000, scalar: 'none' }],
       ['fur, 20000 strokes', { lines: 'fur', strokes: 20000, scalar: 'none' }],
       ['streamlines, separation 0.03 diagonal', { lines: 'streamlines', separation: 0.03, scalar: 'none' }],
       ['fur 4000 + divergence colours', { lines: 'fur', strokes: 4000, scalar: 'divergence' }],
+    ] : [
+      ['vectors and singular vertices only (no lines)', { lines: 'none', scalar: 'none' }],
+      [`${n}-fold glyphs (fur), 4000 seeds`, { lines: 'fur', strokes: 4000, scalar: 'none' }],
+      ['hatching (every family), separation 0.03 diagonal', { lines: 'streamlines', separation: 0.03, scalar: 'none' }],
+      ['glyphs 4000 + energy density colours', { lines: 'fur', strokes: 4000, scalar: 'energy' }],
     ];
     console.log('| display | solve | reconstruct | lines | scalar | server | transfer | draw | total (p90) | message |');
     console.log('|---|---|---|---|---|---|---|---|---|---|');
@@ -106,13 +124,35 @@ async function main() {
       return e.map((x) => x / n);
     }, f);
     const faces = info.mesh.faces;
-    displays.push(['fur 4000, moving the constraint to another face (new rows)',
+    displays.push([`${n === 1 ? 'fur' : 'glyphs'} 4000, moving the constraint to another face (new rows)`,
       { lines: 'fur', strokes: 4000, scalar: 'none' }, 'move']);
+    if (n > 1) {
+      displays.push(['glyphs 4000, placing a singularity +1/n (add, new rows)',
+        { lines: 'fur', strokes: 4000, scalar: 'none' }, 'singularity']);
+    }
     for (const [label, display, kind] of displays) {
       await page.evaluate((d) => window.tvfEditor.request({ type: 'set_display', ...d }), display);
       const before = await page.evaluate(() => window.tvfEditor.latencyLog().length);
       for (let k = 0; k < Number(o.edits); ++k) {
         let constraint;
+        if (kind === 'singularity') {
+          // A click with the singularity tool: anchored in a face of the vertex by the field's
+          // vector there; then removed (not timed) so that every add meets the same set.
+          const face = (vector.constraint.face + 7919 * (k + 1)) % faces;
+          await page.evaluate(async (face) => {
+            const t = window.tvfEditor.mesh().triangles;
+            const v = window.tvfEditor.faceVector(face);
+            const c = { type: 'singularity', vertex: t[3 * face], index: 1, face, vector: v };
+            try {
+              await window.tvfEditor.request({ type: 'add', constraint: c });
+            } catch (e) {
+              return; // a boundary vertex, or a zero field there: refused, not counted
+            }
+            const id = window.tvfEditor.constraints().find((x) => x.constraint.type === 'singularity')?.id;
+            await window.tvfEditor.request({ type: 'remove', id });
+          }, face);
+          continue;
+        }
         if (kind === 'move') {
           // A drag of the anchor over the surface: each edit puts the constraint in another face.
           const face = (vector.constraint.face + 7919 * (k + 1)) % faces;
@@ -127,7 +167,7 @@ async function main() {
           [vector.id, constraint]);
       }
       const log = (await page.evaluate(() => window.tvfEditor.latencyLog())).slice(before)
-        .filter((e) => e.type === 'change');
+        .filter((e) => e.type === (kind === 'singularity' ? 'add' : 'change'));
       const col = (c) => median(log.map((e) => e[c]));
       console.log(`| ${label} | ${f(col('solve_ms'), 3)} | ${f(col('reconstruct_ms'))} | ${f(col('lines_ms'))} | ` +
         `${f(col('scalar_ms'))} | ${f(col('server_ms'))} | ${f(col('transfer_ms'))} | ${f(col('draw_ms'))} | ` +

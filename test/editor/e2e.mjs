@@ -31,6 +31,59 @@ const norm = (v) => Math.hypot(...v);
 const sub = (a, b) => a.map((x, i) => x - b[i]);
 const dot = (a, b) => a.reduce((s, x, i) => s + x * b[i], 0);
 
+// The index k (the field turns by 2 pi k / n around v) of an n-field given by one 3D vector per
+// face, from the geometry alone: around the one-ring, counter-clockwise, each face's vector is
+// carried into the next face by the rotation about their common edge, the turn to the next
+// face's vector is taken modulo 2 pi / n, and the angle defect is added.
+const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+const unit = (a) => a.map((x) => x / norm(a));
+function turned(u, k, angle) {
+  const kxu = cross(k, u);
+  const c = Math.cos(angle), s = Math.sin(angle), d = dot(k, u) * (1 - c);
+  return u.map((x, i) => x * c + kxu[i] * s + k[i] * d);
+}
+function indexFromVectors(mesh, vectors, v, n) {
+  const point = (i) => mesh.positions.slice(3 * i, 3 * i + 3);
+  const vector = (f) => vectors.slice(3 * f, 3 * f + 3);
+  const normal = (f) => {
+    const a = point(mesh.triangles[3 * f]);
+    return unit(cross(sub(point(mesh.triangles[3 * f + 1]), a), sub(point(mesh.triangles[3 * f + 2]), a)));
+  };
+  const byFirst = new Map(); // p -> [face, q] for the ring's faces (v, p, q)
+  for (let f = 0; 3 * f < mesh.triangles.length; ++f) {
+    for (let k = 0; k < 3; ++k) {
+      if (mesh.triangles[3 * f + k] === v) byFirst.set(mesh.triangles[3 * f + (k + 1) % 3], [f, mesh.triangles[3 * f + (k + 2) % 3]]);
+    }
+  }
+  const x = point(v);
+  let defect = 2 * Math.PI, turns = 0;
+  for (const [p, [f, q]] of byFirst) {
+    const a = unit(sub(point(p), x)), b = unit(sub(point(q), x));
+    defect -= Math.acos(Math.max(-1, Math.min(1, dot(a, b))));
+    const h = byFirst.get(q)[0];
+    const nf = normal(f), nh = normal(h);
+    const carried = turned(vector(f), b, Math.atan2(dot(cross(nf, nh), b), dot(nf, nh)));
+    const next = vector(h);
+    const turn = n * Math.atan2(dot(cross(carried, next), nh), dot(carried, next));
+    turns += (turn - 2 * Math.PI * Math.round(turn / (2 * Math.PI))) / n;
+  }
+  return (n * (turns + defect)) / (2 * Math.PI);
+}
+
+// The page's mesh and last field as plain arrays, and the server's singular vertices.
+async function fieldState(page) {
+  return page.evaluate(() => {
+    const m = window.tvfEditor.mesh();
+    const f = window.tvfEditor.lastField();
+    return {
+      mesh: { positions: Array.from(m.positions), triangles: Array.from(m.triangles) },
+      vectors: Array.from(f.vectors),
+      n: f.header.n,
+      singular: Array.from(f.singular_vertices || []).map((v, i) => [v, f.singular_indices[i]]),
+    };
+  });
+}
+
 // Starts the server; resolves with its address once it prints "listening on ...".
 function startServer(o) {
   const server = spawn(o.tvf, ['serve', o.mesh, '--port', '0', '-n', o.eigenfields],
@@ -168,6 +221,60 @@ async function main() {
       return { scalar: f.scalar?.length ?? 0, lines: f.lines?.length ?? 0 };
     });
     check(field.scalar === info.mesh.vertices && field.lines > 0, 'divergence per vertex and streamlines arrive');
+    await page.screenshot({ path: path.join(o.artifacts, 'editor.png') });
+
+    // --- A cross field: n chosen in the page, a singularity placed with the mouse ---
+    await page.selectOption('#n', '4');
+    await page.evaluate(() => window.tvfEditor.idle());
+    check((await page.evaluate(() => window.tvfEditor.info().n)) === 4 &&
+      (await page.evaluate(() => window.tvfEditor.constraints())).length === 0,
+    'choosing a cross field gives n = 4 and drops the vector-field constraints');
+    await page.click('button[data-tool="singularity"]');
+    const spot = { x: canvas.x + centre.x + 0.08 * canvas.height, y: canvas.y + centre.y - 0.05 * canvas.height };
+    await page.mouse.click(spot.x, spot.y);
+    await page.evaluate(() => window.tvfEditor.idle());
+    constraints = await page.evaluate(() => window.tvfEditor.constraints());
+    const placedSingularity = constraints[0]?.constraint;
+    check(constraints.length === 1 && placedSingularity.type === 'singularity' && placedSingularity.index === 1,
+      `a click with the singularity tool places index +1/4 at vertex ${placedSingularity?.vertex}`);
+    let state = await fieldState(page);
+    let measured = indexFromVectors(state.mesh, state.vectors, placedSingularity.vertex, 4);
+    console.log(`  index measured from the page's vectors at vertex ${placedSingularity.vertex}: ${measured.toFixed(6)} / 4`);
+    check(state.n === 4 && Math.abs(measured - 1) < 1e-3, 'the field turns by exactly +1/4 around that vertex');
+    check(state.singular.some(([v, k]) => v === placedSingularity.vertex && k === 1),
+      'the page marks that vertex as a +1/4 singularity');
+    const sum = state.singular.reduce((total, [, k]) => total + k, 0);
+    check(sum === 8, `the singular vertices' indices sum to ${sum}/4 = 2 = the sphere's Euler characteristic`);
+
+    // Dragged to another vertex: the index goes with it.
+    const from = await page.evaluate((v) => window.tvfEditor.projectVertex(v), placedSingularity.vertex);
+    await page.mouse.move(canvas.x + from.x, canvas.y + from.y);
+    await page.mouse.down();
+    await page.mouse.move(canvas.x + from.x - 0.15 * canvas.height, canvas.y + from.y + 0.1 * canvas.height, { steps: 8 });
+    await page.mouse.up();
+    await page.evaluate(() => window.tvfEditor.idle());
+    constraints = await page.evaluate(() => window.tvfEditor.constraints());
+    const movedSingularity = constraints[0]?.constraint;
+    check(constraints.length === 1 && movedSingularity.vertex !== placedSingularity.vertex,
+      `dragging moves the singularity to vertex ${movedSingularity?.vertex}`);
+    state = await fieldState(page);
+    measured = indexFromVectors(state.mesh, state.vectors, movedSingularity.vertex, 4);
+    check(Math.abs(measured - 1) < 1e-3, `the field turns by +1/4 around the new vertex (measured ${measured.toFixed(6)})`);
+
+    // Glyphs and hatching of the cross field, coloured by its smoothness energy.
+    await page.selectOption('#colour', 'energy');
+    await page.selectOption('#lines', 'streamlines');
+    await page.evaluate(() => window.tvfEditor.idle());
+    const hatching = await page.evaluate(() => {
+      const f = window.tvfEditor.lastField();
+      return { scalar: f.scalar?.length ?? 0, lines: f.lines?.length ?? 0, on: f.header.scalar_on };
+    });
+    check(hatching.scalar === info.mesh.faces && hatching.on === 'faces' && hatching.lines > 0,
+      'energy density per face and the hatching of the cross field arrive');
+    await page.screenshot({ path: path.join(o.artifacts, 'editor_cross_field.png') });
+    await page.keyboard.press('Delete');
+    await page.evaluate(() => window.tvfEditor.idle());
+    check((await page.evaluate(() => window.tvfEditor.constraints())).length === 0, 'Delete removes the singularity');
 
     // --- The latency log ---
     const log = await page.evaluate(() => window.tvfEditor.latencyLog());
@@ -184,8 +291,7 @@ async function main() {
       `; message ${median('bytes')} bytes`);
 
     const status = await page.locator('#status').getAttribute('class');
-    await page.screenshot({ path: path.join(o.artifacts, 'editor.png') });
-    console.log(`screenshot: ${path.join(o.artifacts, 'editor.png')}`);
+    console.log(`screenshots: ${path.join(o.artifacts, 'editor.png')}, editor_cross_field.png`);
     check(problems.length === 0, `no errors in the page${problems.length ? ': ' + problems.join('; ') : ''}`);
     check(!status.includes('error'), 'the status line shows no error');
   } finally {

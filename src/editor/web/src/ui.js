@@ -171,6 +171,7 @@ export class Panel {
       button.style.display = N_TOOLS[button.dataset.tool]?.includes(kind) ? '' : 'none';
     }
     for (const option of $('colour').options) option.hidden = !N_COLOURS[option.value]?.includes(kind);
+    $('strength-row').style.display = n === 1 ? '' : 'none';
     const k = Number($('singularity-index').value);
     $('singularity-fraction').textContent = n > 1 ? `index ${k > 0 ? '+' : ''}${k}/${n}` : '';
     if (n === 1) $('singularities').textContent = '';
