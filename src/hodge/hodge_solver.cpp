@@ -7,6 +7,7 @@
 
 #include <Eigen/Dense>
 
+#include <mutex>
 #include <optional>
 #include <random>
 #include <sstream>
@@ -79,6 +80,9 @@ void remove_group_means(Eigen::MatrixXd& X, const std::vector<int>& group, int n
 
 struct Hodge_solver::Impl
 {
+  // One lock per factorisation: CHOLMOD's workspace is not thread-safe, and the vertex and
+  // edge systems may be solved at the same time from two threads.
+  std::mutex vertex_mutex, edge_mutex, harmonic_mutex;
   std::optional<Pinned_system> vertex_system; // W on vertices
   std::optional<Pinned_system> edge_system;   // W* on interior edges
   std::optional<Eigen::MatrixXd> harmonic_basis;
@@ -100,6 +104,7 @@ Eigen::MatrixXd Hodge_solver::solve_vertex_laplacian(const Eigen::MatrixXd& b) c
 {
   const Intrinsic_mesh& mesh = ops_->mesh();
   const int nv = mesh.number_of_vertices();
+  std::unique_lock<std::mutex> lock(impl_->vertex_mutex);
   if(!impl_->vertex_system)
   {
     // Pin the first vertex of every component; drop vertices in no face.
@@ -119,6 +124,7 @@ Eigen::MatrixXd Hodge_solver::solve_vertex_laplacian(const Eigen::MatrixXd& b) c
     impl_->vertex_system = std::move(system);
   }
   Eigen::MatrixXd f = impl_->vertex_system->solve(b);
+  lock.unlock();
   std::vector<int> component(nv);
   for(int v = 0; v < nv; ++v) component[v] = mesh.vertex_component(v);
   remove_group_means(f, component, mesh.topology().number_of_components(), ops_->vertex_masses());
@@ -130,6 +136,7 @@ Eigen::MatrixXd Hodge_solver::solve_edge_laplacian(const Eigen::MatrixXd& b) con
   const Intrinsic_mesh& mesh = ops_->mesh();
   const int ni = mesh.number_of_interior_edges();
   const auto& components = mesh.topology().components;
+  std::unique_lock<std::mutex> lock(impl_->edge_mutex);
   if(!impl_->edge_system)
   {
     // Pin the first interior edge of every closed component; with boundary the
@@ -150,6 +157,7 @@ Eigen::MatrixXd Hodge_solver::solve_edge_laplacian(const Eigen::MatrixXd& b) con
     impl_->edge_system = std::move(system);
   }
   Eigen::MatrixXd g = impl_->edge_system->solve(b);
+  lock.unlock();
   std::vector<int> closed_component(ni, -1);
   Eigen::VectorXd mass(ni);
   for(int i = 0; i < ni; ++i)
@@ -212,6 +220,9 @@ Hodge_parts Hodge_solver::decompose(const Eigen::VectorXd& field, unsigned outpu
 
 const Eigen::MatrixXd& Hodge_solver::harmonic_basis(std::uint64_t seed) const
 {
+  // Made once; the lock keeps a second thread from reading it half made (the solves below
+  // take their own locks).
+  std::lock_guard<std::mutex> lock(impl_->harmonic_mutex);
   if(impl_->harmonic_basis) return *impl_->harmonic_basis;
   const int dim = harmonic_dimension();
   const Eigen::Index n = 2 * static_cast<Eigen::Index>(ops_->mesh().number_of_faces());

@@ -44,6 +44,11 @@ struct Hodge_parts
 /// closed component (components with boundary are regular thanks to the zero
 /// boundary values), then shifted to zero mean.  Pinning keeps both systems
 /// positive definite, so no solver is ever handed a singular matrix.
+///
+/// The const member functions may be called from several threads at once (each
+/// factorisation is made and used under its own lock, so a vertex solve and an edge solve can
+/// run side by side), provided the operators' matrices they use have been built; the
+/// `Operator_matrices` caches themselves are not thread-safe while being built.
 class Hodge_solver
 {
 public:

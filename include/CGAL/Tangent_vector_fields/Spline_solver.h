@@ -90,7 +90,18 @@ struct Spline_report
 template <class Constraint, class Operators>
 class Basic_spline_solver
 {
+protected:
+  struct Row
+  {
+    Constraint_row row;
+    Eigen::VectorXd representation; // solver-specific form of the row (may be empty)
+    Eigen::VectorXd y;              // pull-back Q^+ r^T
+    Eigen::VectorXd harmonic;       // r U_h
+  };
+
 public:
+  typedef Constraint Constraint_type;
+
   virtual ~Basic_spline_solver();
 
   /// Adds a constraint.
@@ -143,17 +154,31 @@ public:
   /// `O(rows 2nf)`, instead of a reconstruction.  Equal to `field()` up to rounding.
   Eigen::VectorXd field_after_value_edit(Constraint_id id) const;
 
+  /// Constraints whose rows are pulled back but not yet added (see `prepare`).
+  struct Prepared
+  {
+    std::vector<Constraint> constraints;
+    std::vector<Row> rows;
+    std::vector<int> owner; // the constraint of each row
+    long energy_version = -1;
+  };
+  /// The costly half of `add`: the constraints' rows and their pull-backs, without changing
+  /// the solver.  It reads only the energy and its factorisations, never the constraint set,
+  /// so a worker thread may run it while this thread edits the constraints and solves (not
+  /// while it changes the energy: `set_omega`).
+  /// \throws Invalid_input for a malformed constraint.
+  Prepared prepare(const std::vector<Constraint>& constraints) const;
+  /// The cheap half: adds prepared constraints (all or nothing, like `add`).  `values` may
+  /// replace the constraints (the same rows, other values: edits made meanwhile).
+  /// \throws Invalid_input if the energy changed since `prepare` (`set_omega`), or if a
+  ///         replacement has other rows.
+  /// \throws Infeasible_constraints as `add`.
+  std::vector<Constraint_id> add_prepared(Prepared prepared,
+                                          const std::vector<Constraint>& values = std::vector<Constraint>());
+
 protected:
   Basic_spline_solver(std::shared_ptr<const Operators> operators, int harmonic_dimension,
                 const Spline_options& options);
-
-  struct Row
-  {
-    Constraint_row row;
-    Eigen::VectorXd representation; // solver-specific form of the row (may be empty)
-    Eigen::VectorXd y;              // pull-back Q^+ r^T
-    Eigen::VectorXd harmonic;       // r U_h
-  };
   /// Fills `representation`, `y` and `harmonic` of every row.
   virtual void pull_back(std::vector<Row>& rows) const = 0;
   /// `r y` for a row and a vector of the solver's space.
@@ -197,6 +222,9 @@ private:
   };
   // Pulls back and appends the rows of `constraints`, under the ids given; all or nothing.
   void insert(const std::vector<Constraint>& constraints, const std::vector<Constraint_id>& ids);
+  // Appends pulled-back rows under the ids given; all or nothing.
+  void append(Prepared& prepared, const std::vector<Constraint_id>& ids);
+  long energy_version_ = 0; // counts changes of the energy (omega)
   void set_scales();
   void solve() const;
   void make_report() const;

@@ -64,20 +64,72 @@ std::vector<Constraint_id> Basic_spline_solver<Constraint, Operators>::add(const
 }
 
 template <class Constraint, class Operators>
-void Basic_spline_solver<Constraint, Operators>::insert(const std::vector<Constraint>& constraints, const std::vector<Constraint_id>& ids)
+typename Basic_spline_solver<Constraint, Operators>::Prepared
+Basic_spline_solver<Constraint, Operators>::prepare(const std::vector<Constraint>& constraints) const
 {
-  // Rows first: a malformed constraint throws before anything changes.
-  std::vector<Row> rows;
-  std::vector<int> owner;
+  // Rows first: a malformed constraint throws before anything is computed.
+  Prepared prepared;
+  prepared.constraints = constraints;
+  prepared.energy_version = energy_version_;
   for(std::size_t i = 0; i < constraints.size(); ++i)
     for(Constraint_row& r : constraint_rows(*operators_, constraints[i]))
     {
       Row row;
       row.row = std::move(r);
-      rows.push_back(std::move(row));
-      owner.push_back(static_cast<int>(i));
+      prepared.rows.push_back(std::move(row));
+      prepared.owner.push_back(static_cast<int>(i));
     }
-  pull_back(rows);
+  pull_back(prepared.rows);
+  return prepared;
+}
+
+template <class Constraint, class Operators>
+std::vector<Constraint_id> Basic_spline_solver<Constraint, Operators>::add_prepared(Prepared prepared,
+                                                                                   const std::vector<Constraint>& values)
+{
+  if(prepared.energy_version != energy_version_)
+    throw Invalid_input("prepared constraints: the energy (omega) changed since they were pulled back");
+  if(!values.empty())
+  {
+    if(values.size() != prepared.constraints.size())
+      throw Invalid_input("prepared constraints: " + std::to_string(values.size()) + " replacements for " +
+                          std::to_string(prepared.constraints.size()) + " constraints");
+    std::vector<int> next(values.size(), 0);
+    std::vector<std::vector<double>> row_values(values.size());
+    for(std::size_t i = 0; i < values.size(); ++i)
+    {
+      if(!prepared.constraints[i].same_rows_as(values[i]))
+        throw Invalid_input("prepared constraints: \"" + values[i].describe() + "\" has other rows than \"" +
+                            prepared.constraints[i].describe() + "\"");
+      row_values[i] = constraint_values(*operators_, values[i]);
+      prepared.constraints[i] = values[i];
+    }
+    for(std::size_t j = 0; j < prepared.rows.size(); ++j)
+    {
+      const int i = prepared.owner[j];
+      prepared.rows[j].row.value = row_values[i][next[i]++];
+    }
+  }
+  std::vector<Constraint_id> ids;
+  for(std::size_t i = 0; i < prepared.constraints.size(); ++i) ids.push_back(next_id_ + static_cast<int>(i));
+  append(prepared, ids);
+  next_id_ += static_cast<int>(prepared.constraints.size());
+  return ids;
+}
+
+template <class Constraint, class Operators>
+void Basic_spline_solver<Constraint, Operators>::insert(const std::vector<Constraint>& constraints, const std::vector<Constraint_id>& ids)
+{
+  Prepared prepared = prepare(constraints);
+  append(prepared, ids);
+}
+
+template <class Constraint, class Operators>
+void Basic_spline_solver<Constraint, Operators>::append(Prepared& prepared, const std::vector<Constraint_id>& ids)
+{
+  const std::vector<Constraint>& constraints = prepared.constraints;
+  std::vector<Row>& rows = prepared.rows;
+  const std::vector<int>& owner = prepared.owner;
 
   const int first = number_of_rows();
   for(std::size_t j = 0; j < rows.size(); ++j)
@@ -187,6 +239,7 @@ void Basic_spline_solver<Constraint, Operators>::set_omega(double omega)
   if(!std::isfinite(omega) || omega < 0) throw Invalid_input("the tension omega must be finite and non-negative");
   const double previous = options_.omega;
   options_.omega = omega;
+  ++energy_version_;
   set_scales();
   try
   {

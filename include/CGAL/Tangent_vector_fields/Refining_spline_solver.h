@@ -1,0 +1,179 @@
+// Copyright (c) 2026 The Tangent_vector_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TANGENT_VECTOR_FIELDS_REFINING_SPLINE_SOLVER_H
+#define CGAL_TANGENT_VECTOR_FIELDS_REFINING_SPLINE_SOLVER_H
+
+/// \file Refining_spline_solver.h
+/// A spline answered at once in a spectral basis and refined to the exact one at full
+/// resolution: the reduced solver's answer is instant but not the spline asked for; the full
+/// solver's costs one pull-back per new constraint.  This class keeps both, computes the full
+/// pull-backs on request or on a worker thread, and answers exactly once every constraint has
+/// its pull-back; from then on value edits are exact too (the full solver's small system and
+/// one product with its pull-backs, no sparse solve).
+
+#include <CGAL/Tangent_vector_fields/Full_spline_solver.h>
+#include <CGAL/Tangent_vector_fields/N_field_spline_solver.h>
+#include <CGAL/Tangent_vector_fields/Reduced_spline_solver.h>
+
+#include <Eigen/Core>
+
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <deque>
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace CGAL {
+namespace Tangent_vector_fields {
+
+/// Progress of a refinement: constraints pulled back so far and how many were pending.
+/// Called from the thread that does the work (the worker thread in the background).
+typedef std::function<void(int done, int total)> Refinement_progress;
+
+/// Which spline a `Basic_refining_spline_solver` answers with.
+struct Spline_answer
+{
+  bool exact = false; ///< the full-resolution spline (every constraint pulled back)
+  int basis_size = 0; ///< else the reduced spline in this many basis elements
+  int pending = 0;    ///< constraints still without their full-resolution pull-back
+};
+
+/// \brief A spline design answered at once in a basis (`Reduced`) and refined to the exact
+/// spline (`Full`, sharing its factorisations: nothing is refactored).
+///
+/// Edits go to both solvers.  The reduced solver takes them at once; the full solver gets a
+/// new or moved constraint only with its pull-back, computed by `refine` (in the calling
+/// thread) or by a worker thread (`refine_in_background`).  Value edits of a constraint that
+/// is already pulled back cost nothing extra; a move (new rows) makes its pull-back pending
+/// again; a removal drops it (and any pull-back under way for it).  `field` answers with the
+/// full spline when nothing is pending, else with the reduced one; `answer` tells which.
+///
+/// Threads: the object is used from one thread; the worker only runs the full solver's
+/// `prepare` (the pull-backs), which reads the energy's factorisations and never the
+/// constraint set, and hands finished pull-backs back through a queue that the calling
+/// thread drains at its next call (each member function, and `wait_until_exact`).  A
+/// pull-back under way is not interrupted: cancellation (`stop_background`, a move or
+/// removal of the constraint being pulled back, `set_omega`, destruction) takes effect when
+/// the current constraint's pull-back ends, and its result is dropped.  The answer is always
+/// consistent: the reduced spline of every constraint, or the full spline of every one.
+template <class Reduced, class Full>
+class Basic_refining_spline_solver
+{
+public:
+  typedef typename Reduced::Constraint_type Constraint;
+
+  /// Both solvers must be empty and made with the same options (omega).
+  /// \throws Invalid_input if a solver is missing or holds constraints.
+  Basic_refining_spline_solver(std::unique_ptr<Reduced> reduced, std::unique_ptr<Full> full);
+  ~Basic_refining_spline_solver();
+  Basic_refining_spline_solver(const Basic_refining_spline_solver&) = delete;
+  Basic_refining_spline_solver& operator=(const Basic_refining_spline_solver&) = delete;
+
+  /// \throws as `Basic_spline_solver::add` (of the reduced solver); nothing changes then.
+  Constraint_id add(const Constraint& constraint);
+  std::vector<Constraint_id> add(const std::vector<Constraint>& constraints);
+  /// Same rows: only values change (both solvers at once).  Other rows: the reduced solver
+  /// at once, the full pull-back becomes pending.
+  void change(Constraint_id id, const Constraint& constraint);
+  void remove(Constraint_id id);
+  void clear();
+  /// A new tension: the worker is stopped, the reduced solver updated, and every pull-back
+  /// becomes pending (they depend on the energy); a background refinement starts again.
+  void set_omega(double omega);
+
+  const Constraint& constraint(Constraint_id id) const;
+  std::vector<Constraint_id> constraint_ids() const;
+  int number_of_constraints() const { return static_cast<int>(entries_.size()); }
+
+  /// Pulls back every pending constraint in this thread, then answers exactly.
+  /// `cancelled` (optional) is asked between constraints; what is done stays done.
+  /// \throws Infeasible_constraints if the full solver refuses a constraint the reduced one
+  ///         took (the rows are nearly dependent): the answer stays reduced.
+  void refine(const Refinement_progress& progress = Refinement_progress(),
+              const std::function<bool()>& cancelled = std::function<bool()>());
+  /// Starts (or keeps) a worker thread that pulls back every pending constraint, and every
+  /// one added or moved later, until `stop_background`.
+  void refine_in_background(Refinement_progress progress = Refinement_progress());
+  /// Stops the worker after the pull-back under way (dropped); pending constraints stay
+  /// pending, finished ones are kept.
+  void stop_background();
+  bool refining_in_background() const { return worker_.joinable(); }
+  /// Waits until nothing is pending (or the timeout passes, or the worker failed), taking in
+  /// the finished pull-backs.  True if the answer is exact.
+  bool wait_until_exact(std::chrono::milliseconds timeout);
+  /// The reason the full solver refused a constraint (empty if none): the answer stays reduced.
+  const std::string& refinement_error() const { return error_; }
+
+  /// Which spline `field` answers with (after taking in finished pull-backs).
+  Spline_answer answer();
+  bool is_exact() { return answer().exact; }
+
+  /// The exact spline if nothing is pending, else the reduced one (frame or power
+  /// coordinates, `2nf`).  `which` (optional) receives the answer this field is: with a
+  /// worker running, a later `answer()` may already say otherwise.
+  Eigen::VectorXd field(Spline_answer* which = nullptr);
+  /// `field` while only the values of constraint `id` change (a drag): from the answering
+  /// solver's cached response to them (`Basic_spline_solver::field_after_value_edit`).
+  Eigen::VectorXd field_after_value_edit(Constraint_id id, Spline_answer* which = nullptr);
+  /// The report of the answering solver.
+  const Spline_report& report();
+
+  const Reduced& reduced() const { return *reduced_; }
+  const Full& full() const { return *full_; }
+
+private:
+  struct Entry
+  {
+    Constraint constraint;
+    Constraint_id reduced = -1;
+    Constraint_id full = -1; // -1: pending
+  };
+  struct Finished
+  {
+    Constraint_id id;
+    long generation;
+    typename Full::Prepared prepared;
+  };
+
+  void integrate();         // takes in finished pull-backs (calling thread)
+  void enqueue(Constraint_id id);
+  void make_pending(Entry& entry, Constraint_id id);
+  void worker_loop(Refinement_progress progress);
+  int pending_count() const;
+
+  std::unique_ptr<Reduced> reduced_;
+  std::unique_ptr<Full> full_;
+  std::map<Constraint_id, Entry> entries_;
+  Constraint_id next_id_ = 0;
+  std::string error_;
+
+  // Shared with the worker (under mutex_): jobs (ids and the constraint to pull back),
+  // finished pull-backs, and generations that tell stale work from current.
+  mutable std::mutex mutex_;
+  std::condition_variable changed_;
+  std::deque<std::pair<Constraint_id, Constraint>> jobs_;
+  std::vector<Finished> finished_;
+  std::map<Constraint_id, long> generation_; // bumped by every move or removal
+  Constraint_id working_on_ = -1;
+  bool stop_ = false;
+  Refinement_progress progress_; // the worker's, kept for restarts (set_omega)
+  std::thread worker_;
+};
+
+typedef Basic_refining_spline_solver<Reduced_spline_solver, Full_spline_solver> Refining_spline_solver;
+typedef Basic_refining_spline_solver<Reduced_n_field_spline_solver, Full_n_field_spline_solver>
+    Refining_n_field_spline_solver;
+extern template class Basic_refining_spline_solver<Reduced_spline_solver, Full_spline_solver>;
+extern template class Basic_refining_spline_solver<Reduced_n_field_spline_solver, Full_n_field_spline_solver>;
+
+} // namespace Tangent_vector_fields
+} // namespace CGAL
+
+#endif
