@@ -25,6 +25,15 @@ Basic_refining_spline_solver<Reduced, Full>::Basic_refining_spline_solver(std::u
 }
 
 template <class Reduced, class Full>
+Basic_refining_spline_solver<Reduced, Full>::Basic_refining_spline_solver(std::unique_ptr<Reduced> reduced,
+                                                                         Full_factory make_full)
+  : reduced_(std::move(reduced)), make_full_(std::move(make_full))
+{
+  if(!reduced_ || !make_full_) throw Invalid_input("refining spline: a reduced solver and a way to make the full one are needed");
+  if(reduced_->number_of_constraints() > 0) throw Invalid_input("refining spline: the solver must start without constraints");
+}
+
+template <class Reduced, class Full>
 Basic_refining_spline_solver<Reduced, Full>::~Basic_refining_spline_solver()
 {
   stop_background();
@@ -121,7 +130,7 @@ void Basic_refining_spline_solver<Reduced, Full>::clear()
 {
   integrate();
   reduced_->clear();
-  full_->clear();
+  if(full_) full_->clear();
   std::lock_guard<std::mutex> lock(mutex_);
   for(const auto& e : entries_) ++generation_[e.first];
   jobs_.clear();
@@ -135,16 +144,21 @@ void Basic_refining_spline_solver<Reduced, Full>::set_omega(double omega)
   // The worker reads the factorisations that a new energy replaces: stop it first.
   const bool background = worker_.joinable();
   stop_background();
+  const double previous = reduced_->options().omega;
   reduced_->set_omega(omega); // unchanged if it throws
   try
   {
-    full_->clear(); // every pull-back depends on the energy
-    full_->set_omega(omega);
+    if(full_)
+    {
+      full_->clear(); // every pull-back depends on the energy
+      full_->set_omega(omega);
+    }
   }
   catch(...)
   {
-    reduced_->set_omega(full_->options().omega);
+    reduced_->set_omega(previous);
     for(auto& e : entries_) e.second.full = -1;
+    if(background) refine_in_background(progress_);
     throw;
   }
   for(auto& e : entries_) e.second.full = -1;
@@ -176,6 +190,8 @@ void Basic_refining_spline_solver<Reduced, Full>::integrate()
   {
     std::lock_guard<std::mutex> lock(mutex_);
     finished.swap(finished_);
+    if(made_full_) full_ = std::move(made_full_);
+    if(!worker_error_.empty()) error_ = worker_error_;
   }
   for(Finished& f : finished)
   {
@@ -205,6 +221,7 @@ void Basic_refining_spline_solver<Reduced, Full>::refine(const Refinement_progre
   // One thread pulls back at a time (the full solver's factorisations are made on first use).
   const bool background = worker_.joinable();
   stop_background();
+  if(!full_) full_ = make_full_(reduced_->options().omega);
   std::vector<Constraint_id> pending;
   for(const auto& e : entries_)
     if(e.second.full == -1) pending.push_back(e.first);
@@ -240,15 +257,37 @@ void Basic_refining_spline_solver<Reduced, Full>::refine_in_background(Refinemen
       stop_ = false;
     }
     progress_ = progress;
-    worker_ = std::thread([this, progress] { worker_loop(progress); });
+    worker_error_.clear();
+    Full* full = full_.get(); // null: the worker makes it
+    const double omega = reduced_->options().omega;
+    worker_ = std::thread([this, full, omega, progress] { worker_loop(full, omega, progress); });
   }
   for(const auto& e : entries_)
     if(e.second.full == -1) enqueue(e.first);
 }
 
 template <class Reduced, class Full>
-void Basic_refining_spline_solver<Reduced, Full>::worker_loop(Refinement_progress progress)
+void Basic_refining_spline_solver<Reduced, Full>::worker_loop(Full* full, double omega, Refinement_progress progress)
 {
+  if(!full)
+  {
+    // Made here: its factorisation is the first part of the wait for an exact answer.
+    try
+    {
+      std::unique_ptr<Full> made = make_full_(omega);
+      full = made.get();
+      std::lock_guard<std::mutex> lock(mutex_);
+      made_full_ = std::move(made);
+    }
+    catch(const std::exception& e)
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      worker_error_ = std::string("the full solver could not be made: ") + e.what();
+      jobs_.clear();
+      changed_.notify_all();
+      return;
+    }
+  }
   int done = 0;
   std::unique_lock<std::mutex> lock(mutex_);
   for(;;)
@@ -264,7 +303,7 @@ void Basic_refining_spline_solver<Reduced, Full>::worker_loop(Refinement_progres
     bool ok = true;
     try
     {
-      finished.prepared = full_->prepare({constraint});
+      finished.prepared = full->prepare({constraint});
     }
     catch(...)
     {
@@ -304,6 +343,28 @@ void Basic_refining_spline_solver<Reduced, Full>::stop_background()
 }
 
 template <class Reduced, class Full>
+void Basic_refining_spline_solver<Reduced, Full>::stop_refining()
+{
+  stop_background();
+  full_.reset();
+  for(auto& e : entries_) e.second.full = -1;
+  error_.clear();
+}
+
+template <class Reduced, class Full>
+void Basic_refining_spline_solver<Reduced, Full>::replace_reduced(std::unique_ptr<Reduced> reduced)
+{
+  if(!reduced || reduced->number_of_constraints() > 0)
+    throw Invalid_input("refining spline: the new reduced solver must exist and start without constraints");
+  std::vector<Constraint> constraints;
+  for(const auto& e : entries_) constraints.push_back(e.second.constraint);
+  const std::vector<Constraint_id> ids = reduced->add(constraints); // all or nothing
+  std::size_t i = 0;
+  for(auto& e : entries_) e.second.reduced = ids[i++];
+  reduced_ = std::move(reduced);
+}
+
+template <class Reduced, class Full>
 bool Basic_refining_spline_solver<Reduced, Full>::wait_until_exact(std::chrono::milliseconds timeout)
 {
   const auto deadline = std::chrono::steady_clock::now() + timeout;
@@ -313,8 +374,9 @@ bool Basic_refining_spline_solver<Reduced, Full>::wait_until_exact(std::chrono::
     if(pending_count() == 0) return true;
     std::unique_lock<std::mutex> lock(mutex_);
     // Nothing will arrive without a worker with work (or a finished result waiting).
-    if(!worker_.joinable() || (jobs_.empty() && working_on_ < 0 && finished_.empty())) return false;
-    if(!finished_.empty()) continue;
+    if(!worker_error_.empty()) return false;
+    if(!worker_.joinable() || (jobs_.empty() && working_on_ < 0 && finished_.empty() && !made_full_)) return false;
+    if(!finished_.empty() || made_full_) continue;
     if(changed_.wait_until(lock, deadline) == std::cv_status::timeout && finished_.empty()) return false;
   }
 }
@@ -325,7 +387,7 @@ Spline_answer Basic_refining_spline_solver<Reduced, Full>::answer()
   integrate();
   Spline_answer a;
   a.pending = pending_count();
-  a.exact = a.pending == 0;
+  a.exact = full_ && a.pending == 0;
   a.basis_size = reduced_->basis_size();
   return a;
 }
@@ -335,7 +397,7 @@ Eigen::VectorXd Basic_refining_spline_solver<Reduced, Full>::field(Spline_answer
 {
   const Spline_answer a = answer();
   if(which) *which = a;
-  return a.exact ? full_->field() : reduced_->field();
+  return a.exact && full_ ? full_->field() : reduced_->field();
 }
 
 template <class Reduced, class Full>
@@ -347,13 +409,14 @@ Eigen::VectorXd Basic_refining_spline_solver<Reduced, Full>::field_after_value_e
   const bool exact = a.exact;
   auto it = entries_.find(id);
   if(it == entries_.end()) throw Invalid_input("no constraint with id " + std::to_string(id));
-  return exact ? full_->field_after_value_edit(it->second.full) : reduced_->field_after_value_edit(it->second.reduced);
+  return exact && full_ ? full_->field_after_value_edit(it->second.full)
+                        : reduced_->field_after_value_edit(it->second.reduced);
 }
 
 template <class Reduced, class Full>
 const Spline_report& Basic_refining_spline_solver<Reduced, Full>::report()
 {
-  return answer().exact ? full_->report() : reduced_->report();
+  return answer().exact && full_ ? full_->report() : reduced_->report();
 }
 
 template class Basic_refining_spline_solver<Reduced_spline_solver, Full_spline_solver>;

@@ -668,3 +668,48 @@ TEST(RefiningSpline, BackgroundRefinementThroughEditsAndCancellation)
   for(const auto& e : set) full.add(e.second);
   EXPECT_LT(relative_mx_error(*s.ops, spline->field(), full.field()), 1e-9);
 }
+
+TEST(RefiningSpline, FullSolverMadeOnTheWorkerAndDroppedWhenNotNeeded)
+{
+  // Made from a factory: nothing of the full solver exists until a refinement asks for it;
+  // the worker makes it (its factorisation is part of the wait), stop_refining drops it and
+  // its pull-backs, and a new reduced solver (another basis size) keeps the full answer.
+  const Mesh mesh = make_icosphere(2);
+  Design_setup s = setup(mesh, 120);
+  const TVF::Intrinsic_mesh& m = s.ops->mesh();
+  int made = 0;
+  TVF::Refining_spline_solver spline(std::make_unique<TVF::Reduced_spline_solver>(s.basis, 40),
+                                     [&](double omega) {
+                                       ++made;
+                                       TVF::Spline_options o;
+                                       o.omega = omega;
+                                       return std::make_unique<TVF::Full_spline_solver>(s.hodge, o);
+                                     });
+  std::map<TVF::Constraint_id, TVF::Field_constraint> set;
+  for(const auto& c : mixed_constraints(m, 4, 8)) set[spline.add(c)] = c;
+  EXPECT_EQ(spline.full(), nullptr);
+  EXPECT_FALSE(spline.answer().exact);
+  spline.refine_in_background();
+  ASSERT_TRUE(spline.wait_until_exact(std::chrono::minutes(1))) << spline.refinement_error();
+  EXPECT_EQ(made, 1);
+  EXPECT_LT(relative_mx_error(*s.ops, spline.field(), fresh_solves(s, 40, set).full), 1e-9);
+  spline.replace_reduced(std::make_unique<TVF::Reduced_spline_solver>(s.basis, 80));
+  EXPECT_TRUE(spline.answer().exact);
+  EXPECT_EQ(spline.answer().basis_size, 80);
+  spline.stop_refining();
+  EXPECT_EQ(spline.full(), nullptr);
+  TVF::Spline_answer a;
+  const Eigen::VectorXd x = spline.field(&a);
+  EXPECT_FALSE(a.exact);
+  EXPECT_LT(relative_mx_error(*s.ops, x, fresh_solves(s, 80, set).reduced), 1e-10);
+  // A factory that fails on the worker: the reason is kept, the answer stays reduced.
+  TVF::Refining_spline_solver failing(std::make_unique<TVF::Reduced_spline_solver>(s.basis, 40),
+                                      [](double) -> std::unique_ptr<TVF::Full_spline_solver> {
+                                        throw TVF::Invalid_input("no factorisation today");
+                                      });
+  failing.add(set.begin()->second);
+  failing.refine_in_background();
+  EXPECT_FALSE(failing.wait_until_exact(std::chrono::seconds(30)));
+  EXPECT_NE(failing.refinement_error().find("no factorisation today"), std::string::npos) << failing.refinement_error();
+  EXPECT_FALSE(failing.answer().exact);
+}

@@ -40,7 +40,7 @@ typedef std::function<void(int done, int total)> Refinement_progress;
 /// Which spline a `Basic_refining_spline_solver` answers with.
 struct Spline_answer
 {
-  bool exact = false; ///< the full-resolution spline (every constraint pulled back)
+  bool exact = false; ///< the full-resolution spline (the full solver exists, every constraint pulled back)
   int basis_size = 0; ///< else the reduced spline in this many basis elements
   int pending = 0;    ///< constraints still without their full-resolution pull-back
 };
@@ -68,10 +68,16 @@ class Basic_refining_spline_solver
 {
 public:
   typedef typename Reduced::Constraint_type Constraint;
+  /// Makes the full solver for a tension omega (for the mesh scaled to unit area).
+  typedef std::function<std::unique_ptr<Full>(double omega)> Full_factory;
 
   /// Both solvers must be empty and made with the same options (omega).
   /// \throws Invalid_input if a solver is missing or holds constraints.
   Basic_refining_spline_solver(std::unique_ptr<Reduced> reduced, std::unique_ptr<Full> full);
+  /// The full solver is made when first needed (`refine`, or on the worker thread by
+  /// `refine_in_background`, so that its factorisation does not hold up the caller); until
+  /// then, and after `stop_refining`, nothing of it is held.
+  Basic_refining_spline_solver(std::unique_ptr<Reduced> reduced, Full_factory make_full);
   ~Basic_refining_spline_solver();
   Basic_refining_spline_solver(const Basic_refining_spline_solver&) = delete;
   Basic_refining_spline_solver& operator=(const Basic_refining_spline_solver&) = delete;
@@ -104,6 +110,13 @@ public:
   /// Stops the worker after the pull-back under way (dropped); pending constraints stay
   /// pending, finished ones are kept.
   void stop_background();
+  /// Stops the worker and drops the full solver with its pull-backs (one field per row: the
+  /// memory an exact answer costs); answers are reduced until the next refinement.
+  void stop_refining();
+  /// A new reduced solver (another basis size): every constraint is added to it, all or
+  /// nothing; the full solver and its pull-backs stay.
+  /// \throws as `Basic_spline_solver::add`; nothing changes then.
+  void replace_reduced(std::unique_ptr<Reduced> reduced);
   bool refining_in_background() const { return worker_.joinable(); }
   /// Waits until nothing is pending (or the timeout passes, or the worker failed), taking in
   /// the finished pull-backs.  True if the answer is exact.
@@ -126,7 +139,8 @@ public:
   const Spline_report& report();
 
   const Reduced& reduced() const { return *reduced_; }
-  const Full& full() const { return *full_; }
+  /// Null until the full solver is made (see the constructors).
+  const Full* full() const { return full_.get(); }
 
 private:
   struct Entry
@@ -145,11 +159,12 @@ private:
   void integrate();         // takes in finished pull-backs (calling thread)
   void enqueue(Constraint_id id);
   void make_pending(Entry& entry, Constraint_id id);
-  void worker_loop(Refinement_progress progress);
+  void worker_loop(Full* full, double omega, Refinement_progress progress);
   int pending_count() const;
 
   std::unique_ptr<Reduced> reduced_;
-  std::unique_ptr<Full> full_;
+  std::unique_ptr<Full> full_; // the calling thread's; null until made
+  Full_factory make_full_;
   std::map<Constraint_id, Entry> entries_;
   Constraint_id next_id_ = 0;
   std::string error_;
@@ -161,6 +176,8 @@ private:
   std::deque<std::pair<Constraint_id, Constraint>> jobs_;
   std::vector<Finished> finished_;
   std::map<Constraint_id, long> generation_; // bumped by every move or removal
+  std::unique_ptr<Full> made_full_;          // made by the worker, not yet taken in
+  std::string worker_error_;                 // the worker could not make the full solver
   Constraint_id working_on_ = -1;
   bool stop_ = false;
   Refinement_progress progress_; // the worker's, kept for restarts (set_omega)

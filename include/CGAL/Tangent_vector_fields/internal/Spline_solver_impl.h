@@ -98,7 +98,17 @@ std::vector<Constraint_id> Basic_spline_solver<Constraint, Operators>::add_prepa
     std::vector<std::vector<double>> row_values(values.size());
     for(std::size_t i = 0; i < values.size(); ++i)
     {
-      if(!prepared.constraints[i].same_rows_as(values[i]))
+      // Directions never have the same rows as another direction (their row is the
+      // direction), but a copy of one has: compare the rows themselves then.
+      auto identical_rows = [&] {
+        const std::vector<Constraint_row> a = constraint_rows(*operators_, prepared.constraints[i]),
+                                          b = constraint_rows(*operators_, values[i]);
+        if(a.size() != b.size()) return false;
+        for(std::size_t k = 0; k < a.size(); ++k)
+          if(a[k].entries != b[k].entries) return false;
+        return true;
+      };
+      if(!prepared.constraints[i].same_rows_as(values[i]) && !identical_rows())
         throw Invalid_input("prepared constraints: \"" + values[i].describe() + "\" has other rows than \"" +
                             prepared.constraints[i].describe() + "\"");
       row_values[i] = constraint_values(*operators_, values[i]);
