@@ -371,7 +371,7 @@ bool Basic_refining_spline_solver<Reduced, Full>::wait_until_exact(std::chrono::
   for(;;)
   {
     integrate();
-    if(pending_count() == 0) return true;
+    if(full_ && pending_count() == 0) return true;
     std::unique_lock<std::mutex> lock(mutex_);
     // Nothing will arrive without a worker with work (or a finished result waiting).
     if(!worker_error_.empty()) return false;
@@ -411,6 +411,14 @@ Eigen::VectorXd Basic_refining_spline_solver<Reduced, Full>::field_after_value_e
   if(it == entries_.end()) throw Invalid_input("no constraint with id " + std::to_string(id));
   return exact && full_ ? full_->field_after_value_edit(it->second.full)
                         : reduced_->field_after_value_edit(it->second.reduced);
+}
+
+template <class Reduced, class Full>
+Eigen::VectorXd Basic_refining_spline_solver<Reduced, Full>::reduced_field_after_value_edit(Constraint_id id) const
+{
+  auto it = entries_.find(id);
+  if(it == entries_.end()) throw Invalid_input("no constraint with id " + std::to_string(id));
+  return reduced_->field_after_value_edit(it->second.reduced);
 }
 
 template <class Reduced, class Full>

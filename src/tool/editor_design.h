@@ -16,6 +16,7 @@
 
 #include <Eigen/Core>
 
+#include <chrono>
 #include <functional>
 #include <memory>
 #include <string>
@@ -49,9 +50,12 @@ struct Design_field
 {
   Eigen::VectorXd x; ///< frame coordinates (n = 1) or the power representation (n > 1), `2nf`
   TVF::Spline_report report;
-  bool full = false;
+  bool exact = false; ///< the full-resolution spline; else the reduced one
+  int pending = 0;    ///< constraints still without their full pull-back
   double solve_ms = 0, reconstruct_ms = 0, full_ms = 0;
-  double difference = -1; ///< full solver on: |x_reduced - x_full| / |x_full| in MX
+  /// Once both answers of this constraint set are known: |x_reduced - x_exact| / |x_exact|
+  /// in MX, and the largest angle between their directions (radians); -1: not known.
+  double difference = -1, largest_angle = -1;
 };
 
 class Editor_design
@@ -67,6 +71,7 @@ public:
   virtual int basis_size() const = 0;  ///< elements the reduced solver uses
   virtual int kernel_dimension() const = 0; ///< harmonic (n = 1) or parallel fields
   virtual double omega() const = 0;
+  /// Exact answers on: the full pull-backs are computed on a worker thread.
   virtual bool full() const = 0;
   /// Session ids of the constraints, increasing.
   virtual std::vector<int> ids() const = 0;
@@ -83,8 +88,15 @@ public:
   virtual std::string save() const = 0;
   virtual void set_omega(double omega, const Design_progress& progress) = 0;
   virtual void set_basis_size(int size) = 0;
-  /// Full solver on (pulls every constraint back, with progress) or off.
+  /// Exact answers on (the full pull-backs on a worker thread: answers are reduced until
+  /// every constraint has one) or off (the full solver and its pull-backs are dropped).
   virtual void set_full(bool full, const Design_progress& progress) = 0;
+  /// Exact answers on and still pending (without a refinement error).
+  virtual bool refining() = 0;
+  /// Waits at most `timeout` for the exact answer; true once it is there.
+  virtual bool wait_exact(std::chrono::milliseconds timeout) = 0;
+  /// Why the exact answer cannot be had (empty if it can).
+  virtual std::string refinement_error() = 0;
 
   /// The field to show (after a value edit of one constraint: from its cached response).
   virtual Design_field field() = 0;

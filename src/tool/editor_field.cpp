@@ -47,9 +47,38 @@ void Editor_session::set_display(Request& r)
   send_field(r);
 }
 
-void Editor_session::send_field(Request& r)
+bool Editor_session::refining() { return design_ && design_->full() && awaiting_exact_; }
+
+void Editor_session::poll(const Send& send, std::chrono::milliseconds timeout)
 {
+  if(!refining()) return;
+  const bool exact = design_->wait_exact(timeout);
+  Request r;
+  r.send = &send;
+  r.has_id = last_edit_.has_id;
+  r.id = last_edit_.id;
+  r.received = last_edit_.received; // server_ms: from the edit to its exact field
+  if(exact) return send_field(r, true);
+  const std::string error = design_->refinement_error();
+  if(!error.empty())
+  {
+    awaiting_exact_ = false; // said once; the next edit tries again
+    r.text("\"type\":\"refinement_failed\",\"message\":" +
+           quote("no exact answer: " + error + "; the field stays the reduced one"));
+  }
+}
+
+void Editor_session::send_field(Request& r, bool refined)
+{
+  if(!refined)
+  {
+    // The edit a later exact field belongs to.
+    last_edit_.has_id = r.has_id;
+    last_edit_.id = r.id;
+    last_edit_.received = r.received;
+  }
   Design_field field = design_->field();
+  awaiting_exact_ = !field.exact; // with exact answers on, `poll` sends the exact one when ready
   const double solve_ms = r.reduced_ms + field.solve_ms;
   double reconstruct_ms = field.reconstruct_ms;
   const Eigen::VectorXd& x = field.x;
@@ -105,8 +134,10 @@ void Editor_session::send_field(Request& r)
   const TVF::Spline_report& report = field.report;
   const std::string warnings = json_array(report.warnings, [](const std::string& w) { return quote(w); });
   std::string members = "\"type\":\"field\"" + r.echo() + ",\"n\":" + std::to_string(design_->n()) +
-                        ",\"solver\":\"" + (field.full ? "full" : "reduced") +
-                        "\",\"basis_size\":" + std::to_string(design_->basis_size()) +
+                        (refined ? ",\"refined\":true" : "") + ",\"solver\":\"" + (design_->full() ? "full" : "reduced") +
+                        "\",\"answer\":{\"exact\":" + (field.exact ? "true" : "false") +
+                        ",\"pending\":" + std::to_string(field.pending) + "}" +
+                        ",\"basis_size\":" + std::to_string(design_->basis_size()) +
                         ",\"omega\":" + number(design_->omega()) + ",\"ids\":" +
                         json_array(design_->ids(), [](int i) { return std::to_string(i); }) +
                         ",\"report\":{\"residual\":" + number(report.constraint_residual) +
@@ -118,10 +149,12 @@ void Editor_session::send_field(Request& r)
                         ",\"reconstruct_ms\":" + short_number(reconstruct_ms) + ",\"lines_ms\":" + short_number(lines_ms) +
                         ",\"scalar_ms\":" + short_number(scalar_ms) +
                         (design_->n() > 1 ? ",\"singularities_ms\":" + short_number(singularities_ms) : std::string()) +
-                        (field.full ? ",\"full_ms\":" + short_number(r.full_ms + field.full_ms) : std::string());
+                        (field.exact ? ",\"full_ms\":" + short_number(r.full_ms + field.full_ms) : std::string());
   // server_ms is measured last, just before the message is handed to the transport.
-  members += ",\"server_ms\":" + short_number(milliseconds_since(r.received)) + "}" +
-             (field.full ? ",\"difference\":" + number(field.difference) : std::string());
+  members += ",\"server_ms\":" + short_number(milliseconds_since(r.received)) + "}";
+  if(field.difference >= 0)
+    members += ",\"difference\":" + number(field.difference) +
+               ",\"largest_angle_deg\":" + number(field.largest_angle * 180 / 3.14159265358979323846);
   (*r.send)(binary_message(members, arrays));
 }
 

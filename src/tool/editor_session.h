@@ -145,6 +145,13 @@ public:
   void refuse_binary(std::size_t bytes, const Send& send);
   void refuse_oversized(std::size_t bytes, const Send& send);
 
+  /// Exact answers are on and the last field sent was the reduced one: the transport calls
+  /// `poll` while no message of the page waits.
+  bool refining();
+  /// Waits at most `timeout` for the exact answer and sends it (a `field` with `refined`,
+  /// echoing the edit it completes), or a `refinement_failed` message if it cannot be had.
+  void poll(const Send& send, std::chrono::milliseconds timeout);
+
 private:
   struct Request;
   void dispatch(Request& request);
@@ -163,9 +170,16 @@ private:
 
   void require_ready(const Request& request) const;
   std::string info_json() const;
-  void send_field(Request& request);
+  void send_field(Request& request, bool refined = false);
 
   std::shared_ptr<const Editor_model> model_;
+  struct
+  {
+    bool has_id = false;
+    long long id = 0;
+    std::chrono::steady_clock::time_point received;
+  } last_edit_;                // the edit whose exact field is still to come
+  bool awaiting_exact_ = false; // the last field sent was the reduced one
   std::unique_ptr<Editor_design> design_; // null until hello
   Display_settings display_;
 };

@@ -138,6 +138,9 @@ void run_websocket(tcp::socket socket, const http::request<http::string_body>& u
   beast::flat_buffer buffer;
   for(;;)
   {
+    // While an exact answer is being computed, and no message of the page waits, send it
+    // when ready (the page sees the reduced field at once and the exact one moments later).
+    while(session.refining() && ws.next_layer().available() == 0) session.poll(send, std::chrono::milliseconds(5));
     buffer.clear();
     std::size_t received = 0;
     bool oversized = false;

@@ -71,14 +71,18 @@ TEST_F(Server_test, field_honours_constraints_and_edits)
   const auto& div = field.floats.at("scalar");
   EXPECT_NEAR(0.2 * div[t[300]] + 0.3 * div[t[301]] + 0.5 * div[t[302]], 3.0, 1e-4);
 
-  // Full resolution: the same constraints met, and its distance to the reduced solution reported.
+  // Exact answers: the same constraints met, and the distance of the reduced answer (the
+  // field just sent) to the exact one reported.
   s.client.send("{\"type\":\"set_solver\",\"solver\":\"full\"}");
   field = s.client.expect("field");
   EXPECT_EQ(field.json.get<std::string>("solver"), "full");
+  if(!field.json.get<bool>("answer.exact")) field = s.client.expect("field"); // the refined one
+  EXPECT_TRUE(field.json.get<bool>("answer.exact"));
   EXPECT_LT(distance(face_vector(field, f), w), 2e-6);
   const double difference = field.json.get<double>("difference");
   EXPECT_GT(difference, 0.0);
   EXPECT_LT(difference, 1.0);
+  EXPECT_GT(field.json.get<double>("largest_angle_deg"), 0.0);
 
   // Save: the command line's constraint file, which load takes back.
   s.client.send("{\"type\":\"save\"}");
@@ -99,6 +103,79 @@ TEST_F(Server_test, field_honours_constraints_and_edits)
   s.client.send("{\"type\":\"remove\",\"id\":" + std::to_string(field.json.get_child("ids").front().second.get_value<int>()) + "}");
   field = s.client.expect("field");
   EXPECT_GT(distance(face_vector(field, f), w), 0.1);
+}
+
+// The fields an edit brings: the first answer, and if it is reduced, the exact one that follows
+// (a `refined` field echoing the edit's request).  Returns the exact one.
+Message until_exact(Client& client, int request)
+{
+  Message field = client.expect("field");
+  EXPECT_EQ(field.json.get<int>("request"), request);
+  EXPECT_FALSE(field.json.get<bool>("refined", false));
+  if(field.json.get<bool>("answer.exact")) return field;
+  Message exact = client.expect("field");
+  EXPECT_TRUE(exact.json.get<bool>("refined", false));
+  EXPECT_TRUE(exact.json.get<bool>("answer.exact"));
+  EXPECT_EQ(exact.json.get<int>("answer.pending"), 0);
+  EXPECT_EQ(exact.json.get<int>("request"), request);
+  EXPECT_GE(exact.json.get<double>("difference"), 0.0); // both answers of this state are known
+  return exact;
+}
+
+TEST_F(Server_test, exact_answers_follow_reduced_ones)
+{
+  // With exact answers on, an edit is answered at once (reduced if a pull-back is pending)
+  // and the exact field follows unasked; value edits of pulled-back constraints are exact at
+  // once; a move makes the answer reduced again until its new pull-back is in; the exact
+  // field meets the constraints in the solver's precision (1e-9) and to float32 on the wire.
+  Session s(server->port());
+  s.client.send("{\"type\":\"set_solver\",\"solver\":\"full\",\"request\":1}");
+  until_exact(s.client, 1); // no constraint yet: exact once the full solver is made
+  const int f = 40, g = 200;
+  const std::array<double, 3> v = tangent(s.mesh, f);
+  s.client.send("{\"type\":\"add\",\"request\":2,\"constraint\":" + vector_constraint(f, v) + "}");
+  const int id = s.client.expect("added").json.get<int>("id");
+  Message exact = until_exact(s.client, 2);
+  EXPECT_LT(distance(face_vector(exact, f), v), 1e-6);
+  EXPECT_LT(exact.json.get<double>("report.residual"), 1e-9);
+  // A value edit: exact at once, no second field.
+  const std::array<double, 3> w = {{0.5 * v[0], 0.5 * v[1], 0.5 * v[2]}};
+  s.client.send("{\"type\":\"change\",\"request\":3,\"id\":" + std::to_string(id) + ",\"constraint\":" +
+                vector_constraint(f, w) + "}");
+  Message field = s.client.expect("field");
+  EXPECT_TRUE(field.json.get<bool>("answer.exact"));
+  EXPECT_LT(distance(face_vector(field, f), w), 1e-6);
+  EXPECT_GE(field.json.get<double>("difference"), 0.0); // the reduced answer is cheap here too
+  s.client.send("{\"type\":\"ping\",\"request\":4}");
+  EXPECT_EQ(s.client.expect("pong").json.get<int>("request"), 4); // nothing else came
+  // A move, then another before its pull-back can be in: each answer is of its own state, and
+  // the exact field that ends it meets the last one.
+  const std::array<double, 3> u = tangent(s.mesh, g);
+  s.client.send("{\"type\":\"change\",\"request\":5,\"id\":" + std::to_string(id) + ",\"constraint\":" +
+                vector_constraint(g, u) + "}");
+  s.client.send("{\"type\":\"change\",\"request\":6,\"id\":" + std::to_string(id) + ",\"constraint\":" +
+                vector_constraint(f, v) + "}");
+  std::vector<Message> fields;
+  for(;;)
+  {
+    fields.push_back(s.client.expect("field"));
+    const Message& m = fields.back();
+    if(m.json.get<int>("request") == 6 && m.json.get<bool>("answer.exact")) break;
+  }
+  for(const Message& m : fields)
+  {
+    const bool last_state = m.json.get<int>("request") == 6;
+    // Every field shows its own state: the constraint of that request is met.
+    EXPECT_LT(distance(face_vector(m, last_state ? f : g), last_state ? v : u), 1e-6)
+        << "request " << m.json.get<int>("request") << (m.json.get<bool>("answer.exact") ? " exact" : " reduced");
+  }
+  EXPECT_LT(distance(face_vector(fields.back(), f), v), 1e-6);
+  // Exact answers off: reduced at once, nothing follows.
+  s.client.send("{\"type\":\"set_solver\",\"solver\":\"reduced\",\"request\":7}");
+  field = s.client.expect("field");
+  EXPECT_FALSE(field.json.get<bool>("answer.exact"));
+  s.client.send("{\"type\":\"ping\",\"request\":8}");
+  EXPECT_EQ(s.client.expect("pong").json.get<int>("request"), 8);
 }
 
 TEST_F(Server_test, fast_value_edits_equal_fresh_solves)

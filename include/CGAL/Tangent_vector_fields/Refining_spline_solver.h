@@ -135,6 +135,9 @@ public:
   /// `field` while only the values of constraint `id` change (a drag): from the answering
   /// solver's cached response to them (`Basic_spline_solver::field_after_value_edit`).
   Eigen::VectorXd field_after_value_edit(Constraint_id id, Spline_answer* which = nullptr);
+  /// The reduced spline while only the values of constraint `id` change, whichever answer
+  /// `field` gives (to compare the two answers of one constraint set cheaply).
+  Eigen::VectorXd reduced_field_after_value_edit(Constraint_id id) const;
   /// The report of the answering solver.
   const Spline_report& report();
 
