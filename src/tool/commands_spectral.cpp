@@ -238,7 +238,7 @@ int info_command(const Arguments& args)
   const TVF::Intrinsic_mesh& m = mesh.intrinsic();
   const TVF::Mesh_topology& t = m.topology();
   say("mesh: %s\n", mesh.path().c_str());
-  say("  repairs: %s\n", mesh.repair_report().summary().c_str());
+  say("  repairs: %s\n", mesh.repair_report().changed() ? mesh.repair_report().summary().c_str() : "none");
   say("  %d vertices, %d edges (%d interior, %d boundary), %d faces\n", m.number_of_vertices(), m.number_of_edges(),
       m.number_of_interior_edges(), m.number_of_edges() - m.number_of_interior_edges(), m.number_of_faces());
   say("  area %.6g, mean edge length %.6g, bounding box diagonal %.6g\n", mesh.area(), m.mean_edge_length(),
