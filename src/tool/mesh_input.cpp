@@ -118,9 +118,11 @@ Mesh_file read_mesh_file(const std::string& path)
     else if(ext == "obj") ok = CGAL::IO::read_OBJ(path, file.points, file.polygons, np);
     else if(ext == "stl") ok = CGAL::IO::read_STL(path, file.points, file.polygons, np);
     else if(ext == "ts") ok = CGAL::IO::read_GOCAD(path, file.points, file.polygons, np);
-    else
-      ok = CGAL::IO::read_PLY(path, file.points, file.polygons, np) &&
-           read_ply_face_properties(path, file.face_properties);
+    else if((ok = CGAL::IO::read_PLY(path, file.points, file.polygons, np)))
+    {
+      // The mesh is what counts: a PLY whose properties this parser cannot follow just has none.
+      if(!read_ply_face_properties(path, file.face_properties)) file.face_properties.clear();
+    }
   }
   catch(const std::exception& e)
   {
