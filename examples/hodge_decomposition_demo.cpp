@@ -1,7 +1,8 @@
 // Copyright (c) 2026 The Tangent_vector_fields authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The main demo: load a mesh (default: CGAL's elephant), make a tangent field,
+// The main demo: load a mesh (default: CGAL's elephant; quad meshes, soups and non-manifold
+// meshes are repaired first, see polygon_soup_to_mesh), make a tangent field,
 // split it into its curl-free, divergence-free and harmonic parts, print the sizes
 // of the parts, the topology and the timings; then compute the lowest eigenfields
 // of the Hodge-Laplacian (with a progress bar; saved, so the next run loads them),
@@ -12,11 +13,12 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/IO/polygon_soup_io.h>
 
 #include <CGAL/Tangent_vector_fields/face_field_io.h>
 #include <CGAL/Tangent_vector_fields/Spectral_basis.h>
 #include <CGAL/Tangent_vector_fields/hodge_decomposition.h>
+#include <CGAL/Tangent_vector_fields/polygon_soup_to_mesh.h>
 
 #include <chrono>
 #include <cstdio>
@@ -56,14 +58,28 @@ int main(int argc, char** argv)
   const std::string prefix = argc > 2 ? argv[2] : "hodge_demo";
   const int eigenfields = argc > 3 ? std::atoi(argv[3]) : 300;
 
-  Mesh mesh;
-  if(!CGAL::IO::read_polygon_mesh(input, mesh, CGAL::parameters::verbose(false)) || is_empty(mesh))
+  // Read as a polygon soup and made a triangle mesh: quad meshes, inconsistently oriented
+  // soups and non-manifold vertices are repaired (the report says how).
+  std::vector<K::Point_3> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  if(!CGAL::IO::read_polygon_soup(input, points, polygons, CGAL::parameters::verbose(false)) || polygons.empty())
   {
     std::cerr << "error: cannot read a polygon mesh from '" << input << "'\n";
     return 1;
   }
+  Mesh mesh;
+  TVF::Mesh_repair_report repairs;
+  try
+  {
+    repairs = TVF::polygon_soup_to_mesh(points, polygons, mesh);
+  }
+  catch(const TVF::Invalid_mesh& e)
+  {
+    std::cerr << "error: '" << input << "': " << e.what() << '\n';
+    return 1;
+  }
   std::cout << "mesh: " << input << "\n  " << mesh.number_of_vertices() << " vertices, " << mesh.number_of_faces()
-            << " faces\n";
+            << " faces\n  repairs: " << repairs << '\n';
 
   try
   {

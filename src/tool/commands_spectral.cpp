@@ -227,8 +227,9 @@ std::shared_ptr<const TVF::Eigenfield_basis> load_basis(const Tool_mesh& mesh, c
 int info_command(const Arguments& args)
 {
   Command_line command("tvf info <mesh> [options]",
-                       "Reads a mesh and prints its size, area, topology (components, genus, boundary loops), the\n"
-                       "dimension of its harmonic fields, the face fields stored in it (PLY), and warnings.");
+                       "Reads a mesh and prints the repairs it needed, its size, area, topology (components, genus,\n"
+                       "boundary loops), the dimension of its harmonic fields, the face fields stored in it (PLY),\n"
+                       "and warnings.");
   command.positional("mesh", "the mesh file");
   command.group("info").add_options()("components", po::value<int>()->default_value(10)->value_name("N"),
                                       "list at most N components");
@@ -237,6 +238,7 @@ int info_command(const Arguments& args)
   const TVF::Intrinsic_mesh& m = mesh.intrinsic();
   const TVF::Mesh_topology& t = m.topology();
   say("mesh: %s\n", mesh.path().c_str());
+  say("  repairs: %s\n", mesh.repair_report().changed() ? mesh.repair_report().summary().c_str() : "none");
   say("  %d vertices, %d edges (%d interior, %d boundary), %d faces\n", m.number_of_vertices(), m.number_of_edges(),
       m.number_of_interior_edges(), m.number_of_edges() - m.number_of_interior_edges(), m.number_of_faces());
   say("  area %.6g, mean edge length %.6g, bounding box diagonal %.6g\n", mesh.area(), m.mean_edge_length(),

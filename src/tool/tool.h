@@ -11,6 +11,7 @@
 #ifndef TVF_TOOL_TOOL_H
 #define TVF_TOOL_TOOL_H
 
+#include <CGAL/Tangent_vector_fields/Mesh_repair_report.h>
 #include <CGAL/Tangent_vector_fields/Operator_matrices.h>
 
 #include <Eigen/Core>
@@ -89,7 +90,7 @@ bool constraint_file_has_n(const Arguments& args);
 /// \brief The command line of one subcommand: options, one positional argument, `--help`.
 ///
 /// Every subcommand has `-h, --help` and `-q, --quiet`; those that read a mesh also
-/// get `--mollify`.
+/// get `--mollify` and `--strict`.
 class Command_line
 {
 public:
@@ -115,6 +116,7 @@ public:
   std::string positional_value() const;
   bool quiet() const { return has("quiet"); }
   bool mollify() const { return has("mollify"); }
+  bool strict() const { return has("strict"); }
 
   /// Usage_error unless `name` was given.
   void require(const std::string& name, const std::string& why = std::string()) const;
@@ -135,6 +137,12 @@ private:
 void set_quiet(bool quiet);
 /// The report: printf to stdout (nothing with `--quiet`).
 void say(const char* format, ...) __attribute__((format(printf, 1, 2)));
+/// One line "tvf: warning: <text>" on stderr (nothing with `--quiet`).
+void warn(const std::string& text);
+/// With `--strict` (set by `Command_line::parse`), `Tool_mesh` refuses a mesh file that
+/// needs repair instead of repairing it with a warning.
+void set_strict_mesh_input(bool strict);
+bool strict_mesh_input();
 
 /// Progress on stderr, drawn only when stderr is a terminal (and not `--quiet`), so
 /// that scripts and the tests see nothing but errors there.
@@ -187,12 +195,19 @@ struct Named_field
   Eigen::VectorXd x;
 };
 
-/// A mesh read from a file, checked, with its operators.
+/// \brief A mesh read from a file, repaired, checked, with its operators.
+///
+/// The file is read as a polygon soup and made a triangle mesh by `polygon_soup_to_mesh`
+/// (polygons triangulated, orientations made consistent, non-manifold vertices and edges
+/// cut apart), with a warning naming the changes; with `--strict` (`strict_mesh_input()`)
+/// a file that needs any of that is refused instead.  Fields given per polygon of the
+/// file (PLY face properties, `.tvf`, `.rawfield`, ...) go to the triangles the polygon
+/// became.
 class Tool_mesh
 {
 public:
   /// \throws Tool_error with a one-line reason (missing file, unknown format,
-  ///         unreadable or refused mesh).
+  ///         unreadable or refused mesh, a repair refused by `--strict`).
   Tool_mesh(const std::string& path, bool mollify);
   ~Tool_mesh();
   Tool_mesh(const Tool_mesh&) = delete;
@@ -207,13 +222,19 @@ public:
   double area() const { return matrices_->face_areas().sum(); }
   /// Diagonal of the bounding box of the vertices that lie in faces.
   double bounding_box_diagonal() const;
-  /// Vertices in the file, including those in no face.
+  /// Vertices of the mesh, including those in no face.
   int number_of_file_vertices() const;
+  /// What the repair of the file changed (`changed()` is false for a file taken as it is).
+  const TVF::Mesh_repair_report& repair_report() const;
   /// Names of the face fields stored as PLY face properties `name_x`, `name_y`, `name_z`.
   std::vector<std::string> face_fields_in_file() const;
 
-  /// Reads a field; the result is in frame coordinates (projected onto the faces).
-  /// \throws Tool_error naming the file and the reason (wrong face count, ...).
+  /// Reads a field; the result is in frame coordinates (projected onto the faces).  A
+  /// field with one vector per face of the mesh is taken as it is; if the repair split or
+  /// removed polygons, a field with one vector per polygon of the mesh file is mapped:
+  /// each triangle gets the vector of its polygon.
+  /// \throws Tool_error naming the file and the reason (wrong vector count, a count that
+  ///         fits both the faces and the polygons while they differ, ...).
   Eigen::VectorXd read_field(const Field_source& source) const;
   /// Writes fields to `path`, the format chosen by the extension: `.tvf` and
   /// `.rawfield` hold one field, `.vtp` and `.ply` (the mesh with face properties) any number.

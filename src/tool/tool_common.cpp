@@ -24,7 +24,9 @@ Command_line::Command_line(std::string usage, std::string description, bool read
   general.add_options()("help,h", "show this help and exit")("quiet,q", "print nothing but errors");
   if(reads_mesh)
     general.add_options()("mollify", "intrinsic mollification: make degenerate faces usable by adding a constant to "
-                                     "all edge lengths (Sharp and Crane 2020)");
+                                     "all edge lengths (Sharp and Crane 2020)")(
+        "strict", "refuse a mesh file that needs repair (polygons to triangulate, orientations to make consistent, "
+                  "non-manifold vertices or edges, degenerate or duplicate polygons) instead of repairing it");
 }
 
 po::options_description& Command_line::group(const std::string& title)
@@ -72,6 +74,7 @@ bool Command_line::parse(const Arguments& args)
     throw Usage_error("unexpected argument '" + values_[positional_name_].as<std::vector<std::string>>()[1] +
                       "' (only one " + positional_name_ + " is read)");
   set_quiet(quiet());
+  set_strict_mesh_input(strict());
   return true;
 }
 
@@ -116,11 +119,24 @@ void Command_line::print_help(std::ostream& out) const
 
 namespace {
 bool quiet_mode = false;
+bool strict_mode = false;
 
 bool stderr_is_terminal() { return !quiet_mode && isatty(STDERR_FILENO) != 0; }
 } // namespace
 
 void set_quiet(bool quiet) { quiet_mode = quiet; }
+
+void set_strict_mesh_input(bool strict) { strict_mode = strict; }
+
+bool strict_mesh_input() { return strict_mode; }
+
+void warn(const std::string& text)
+{
+  if(quiet_mode) return;
+  std::fflush(stdout);
+  std::fprintf(stderr, "tvf: warning: %s\n", one_line(text).c_str());
+  std::fflush(stderr);
+}
 
 void say(const char* format, ...)
 {

@@ -1,19 +1,21 @@
 // Copyright (c) 2026 The Tangent_vector_fields authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The one translation unit of the tool that includes Surface_mesh: reading the mesh
-// (every format CGAL::IO::read_polygon_mesh reads; PLY with its face properties), and
-// the field files that need the mesh type (.tvf, .rawfield, .vtp, PLY properties).
+// The one translation unit of the tool that includes Surface_mesh: the mesh made from the
+// file's polygon soup (polygon_soup_to_mesh, which repairs it), and the field files that
+// need the mesh type (.tvf, .rawfield, .vtp, PLY properties), fields given per polygon of
+// the file mapped to the faces they became.
 
+#include "mesh_input.h"
 #include "tool.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <CGAL/Tangent_vector_fields/Discrete_operators.h>
 #include <CGAL/Tangent_vector_fields/face_field_io.h>
 #include <CGAL/Tangent_vector_fields/field_export.h>
+#include <CGAL/Tangent_vector_fields/polygon_soup_to_mesh.h>
 
 #include <cerrno>
 #include <cstring>
@@ -35,47 +37,52 @@ void check_readable(const std::string& path, const std::string& what)
   if(!in) throw Tool_error("cannot open " + what + " '" + path + "': " + std::strerror(errno));
 }
 
-// Reads a mesh; PLY files through the Surface_mesh reader, which keeps the face properties.
-void read_mesh(const std::string& path, Mesh& mesh)
+typedef std::vector<std::array<double, 3>> Vectors;
+
+// The mesh of a file: its polygon soup made a triangle mesh (repaired, unless `strict`),
+// with the file's face fields (PLY) as face properties `f:NAME_x`, ... mapped to the faces.
+// `polygon_of_face[f]` is the polygon of the file that face `f` comes from.
+void load_mesh(const std::string& path, bool strict, Mesh& mesh, TVF::Mesh_repair_report& report,
+               std::vector<std::size_t>& polygon_of_face)
 {
-  check_readable(path, "mesh file");
-  const std::string ext = extension(path);
-  static const std::set<std::string> formats = {"off", "obj", "ply", "stl", "ts"};
-  if(!formats.count(ext))
-    throw Tool_error("'" + path + "': unknown mesh format" + (ext.empty() ? std::string() : " '." + ext + "'") +
-                     " (the tool reads .off, .obj, .ply, .stl and .ts)");
-  bool ok = false;
+  const Mesh_file file = read_mesh_file(path);
+  if(file.polygons.empty()) throw Tool_error("'" + path + "' has no faces");
+  auto origin = mesh.add_property_map<Face_index, std::size_t>("f:tvf_polygon", 0).first;
   try
   {
-    if(ext == "ply")
-    {
-      std::ifstream in(path, std::ios::binary);
-      std::string comments;
-      ok = CGAL::IO::read_PLY(in, mesh, comments, false);
-    }
-    else
-    {
-      // Surface_mesh's readers want a file-name extension in lower case.
-      ok = CGAL::IO::read_polygon_mesh(path, mesh, CGAL::parameters::verbose(false));
-      if(!ok && path.substr(path.size() - ext.size()) != ext)
-      {
-        mesh.clear();
-        if(ext == "off") ok = CGAL::IO::read_OFF(path, mesh, CGAL::parameters::verbose(false));
-        else if(ext == "obj") ok = CGAL::IO::read_OBJ(path, mesh, CGAL::parameters::verbose(false));
-        else if(ext == "stl") ok = CGAL::IO::read_STL(path, mesh, CGAL::parameters::verbose(false));
-        else if(ext == "ts") ok = CGAL::IO::read_GOCAD(path, mesh, CGAL::parameters::verbose(false));
-      }
-    }
+    report = TVF::polygon_soup_to_mesh(file.points, file.polygons, mesh, TVF::parameters::face_to_polygon_map(origin));
   }
-  catch(const std::exception& e)
+  catch(const TVF::Invalid_mesh& e)
   {
-    throw Tool_error("cannot read a mesh from '" + path + "': " + one_line(e.what()));
+    throw Tool_error("'" + path + "': " + one_line(e.what()));
   }
-  if(!ok)
-    throw Tool_error("cannot read a polygon mesh from '" + path +
-                     "' (malformed file, or its faces do not form a manifold polygon mesh)");
-  if(mesh.number_of_faces() == 0) throw Tool_error("'" + path + "' has no faces");
-  if(mesh.has_garbage()) mesh.collect_garbage();
+  if(strict && report.changed())
+    throw Tool_error("'" + path + "' needs repairs that --strict forbids: " + report.summary());
+  if(mesh.number_of_faces() == 0) throw Tool_error("'" + path + "' has no faces (" + report.summary() + ")");
+  polygon_of_face.clear();
+  for(Face_index f : mesh.faces()) polygon_of_face.push_back(origin[f]);
+  mesh.remove_property_map(origin);
+  for(const auto& [name, values] : file.face_properties)
+  {
+    auto map = mesh.add_property_map<Face_index, double>("f:" + name, 0.).first;
+    for(Face_index f : mesh.faces()) map[f] = values[polygon_of_face[std::size_t(f)]];
+  }
+}
+
+// Whether `polygons` (of a field file that holds a mesh too) are the faces of `mesh`, up to
+// where each starts.
+bool are_faces_of(const std::vector<std::vector<std::size_t>>& polygons, const Mesh& mesh)
+{
+  if(polygons.size() != mesh.number_of_faces()) return false;
+  for(Face_index f : mesh.faces())
+  {
+    std::vector<std::size_t> a, b = polygons[std::size_t(f)];
+    for(auto v : vertices_around_face(mesh.halfedge(f), mesh)) a.push_back(std::size_t(v));
+    std::sort(a.begin(), a.end());
+    std::sort(b.begin(), b.end());
+    if(a != b) return false;
+  }
+  return true;
 }
 
 // The face field properties (NAME_x, NAME_y, NAME_z of type double) of a mesh.
@@ -126,13 +133,46 @@ struct Tool_mesh::Impl
 {
   std::string path;
   Mesh mesh;
+  TVF::Mesh_repair_report repair;
+  std::vector<std::size_t> polygon_of_face;
   std::unique_ptr<TVF::Discrete_operators<Mesh>> operators;
+
+  // `values` (one vector per face, or per polygon of the file) into `map`.
+  void place(const Vectors& values, const std::string& where, Field_map& map) const;
 };
+
+void Tool_mesh::Impl::place(const Vectors& values, const std::string& where, Field_map& map) const
+{
+  const std::size_t faces = mesh.number_of_faces(), polygons = repair.number_of_polygons;
+  const bool per_polygon = !repair.faces_match_polygons && values.size() == polygons;
+  if(!per_polygon && values.size() != faces)
+  {
+    std::string reason = where + " has " + std::to_string(values.size()) + " vectors but the mesh has " +
+                         std::to_string(faces) + " faces";
+    if(!repair.faces_match_polygons)
+      reason += " (made by the repair of the " + std::to_string(polygons) + " polygons of '" + path +
+                "'; a field needs one vector per face, or one per polygon of the file)";
+    throw Tool_error(reason);
+  }
+  if(per_polygon && faces == polygons)
+    throw Tool_error(where + " has " + std::to_string(values.size()) + " vectors, one per face of the repaired mesh " +
+                     "or one per polygon of '" + path + "', which differ (polygons were split or removed): it is " +
+                     "ambiguous which is meant (a .vtp or .ply field file written by tvf holds its mesh and is not)");
+  for(Face_index f : mesh.faces())
+  {
+    const std::array<double, 3>& w = values[per_polygon ? polygon_of_face[std::size_t(f)] : std::size_t(f)];
+    map[f] = K::Vector_3(w[0], w[1], w[2]);
+  }
+  if(per_polygon)
+    say("note: %s has one vector per polygon of '%s': each of the %zu triangles got the vector of its polygon\n",
+        where.c_str(), path.c_str(), faces);
+}
 
 Tool_mesh::Tool_mesh(const std::string& path, bool mollify) : impl_(std::make_unique<Impl>())
 {
   impl_->path = path;
-  read_mesh(path, impl_->mesh);
+  load_mesh(path, strict_mesh_input(), impl_->mesh, impl_->repair, impl_->polygon_of_face);
+  if(impl_->repair.changed()) warn("'" + path + "' repaired: " + impl_->repair.summary());
   try
   {
     impl_->operators = std::make_unique<TVF::Discrete_operators<Mesh>>(
@@ -146,7 +186,6 @@ Tool_mesh::Tool_mesh(const std::string& path, bool mollify) : impl_(std::make_un
     const std::size_t at = reason.find(parameter);
     if(at != std::string::npos) reason.replace(at, parameter.size(), mollify ? "mollification did not help" : "use --mollify");
     else if(e.defect() == TVF::Mesh_defect::degenerate_face && !mollify) reason += " (try --mollify)";
-    if(e.defect() == TVF::Mesh_defect::non_triangle_face) reason += " (the tool needs a triangle mesh)";
     throw Tool_error("'" + path + "': " + reason);
   }
   matrices_ = impl_->operators->shared_matrices();
@@ -175,6 +214,8 @@ double Tool_mesh::bounding_box_diagonal() const
 
 int Tool_mesh::number_of_file_vertices() const { return static_cast<int>(impl_->mesh.number_of_vertices()); }
 
+const TVF::Mesh_repair_report& Tool_mesh::repair_report() const { return impl_->repair; }
+
 std::vector<std::string> Tool_mesh::face_fields_in_file() const { return face_field_names(impl_->mesh); }
 
 Eigen::VectorXd Tool_mesh::read_field(const Field_source& source) const
@@ -187,6 +228,7 @@ Eigen::VectorXd Tool_mesh::read_field(const Field_source& source) const
   {
     if(source.from_mesh_file)
     {
+      // Read with the mesh and mapped to its faces there.
       if(extension(impl_->path) != "ply")
         throw Tool_error("'--field-ply " + source.name + "' reads face properties of a PLY mesh, but '" + impl_->path +
                          "' is not a .ply file");
@@ -200,36 +242,55 @@ Eigen::VectorXd Tool_mesh::read_field(const Field_source& source) const
       check_readable(file, "field file");
       const std::string ext = extension(file);
       if(ext == "tvf")
-        TVF::read_face_field(file, mesh, map);
+      {
+        std::ifstream in(file);
+        impl_->place(TVF::read_face_vectors(in), where, map);
+      }
       else if(ext == "rawfield")
-        TVF::read_raw_field(file, mesh, map, source.direction);
+      {
+        std::ifstream in(file);
+        const TVF::Raw_field raw = TVF::read_raw_field(in);
+        if(source.direction < 0 || source.direction >= raw.degree)
+          throw Tool_error(where + " has " + std::to_string(raw.degree) + " vectors per face; direction " +
+                           std::to_string(source.direction) + " does not exist");
+        Vectors picked;
+        for(std::size_t i = std::size_t(source.direction); i < raw.vectors.size(); i += std::size_t(raw.degree))
+          picked.push_back(raw.vectors[i]);
+        impl_->place(picked, where, map);
+      }
       else if(ext == "vtp")
       {
+        std::ifstream in(file);
+        const TVF::Vtk_polydata data = TVF::read_vtk_polydata(in);
         std::string name = source.name;
         if(name.empty())
-        {
-          std::ifstream in(file);
-          const TVF::Vtk_polydata data = TVF::read_vtk_polydata(in);
           for(const auto& a : data.cell_data)
             if(a.components == 3)
             {
               name = a.name;
               break;
             }
-          if(name.empty()) throw Tool_error(where + " has no 3-component cell array");
-        }
-        TVF::read_vtp(file, mesh, name, map);
+        const TVF::Vtk_polydata::Array* a = data.find_cell_array(name);
+        if(name.empty() || !a || a->components != 3)
+          throw Tool_error(where + (name.empty() ? " has no 3-component cell array"
+                                                 : " has no 3-component cell array '" + name + "'"));
+        if(!data.lines.empty()) throw Tool_error(where + " holds lines, not a mesh with a face field");
+        Vectors values(a->number_of_tuples());
+        for(std::size_t i = 0; i < values.size(); ++i)
+          values[i] = {{a->values[3 * i], a->values[3 * i + 1], a->values[3 * i + 2]}};
+        std::vector<std::vector<std::size_t>> polygons;
+        for(const auto& p : data.polygons) polygons.emplace_back(p.begin(), p.end());
+        if(are_faces_of(polygons, mesh))
+          for(Face_index f : mesh.faces())
+            map[f] = K::Vector_3(values[std::size_t(f)][0], values[std::size_t(f)][1], values[std::size_t(f)][2]);
+        else
+          impl_->place(values, where, map);
       }
       else if(ext == "ply")
       {
-        Mesh other;
-        read_mesh(file, other);
-        if(other.number_of_faces() != mesh.number_of_faces() || other.number_of_vertices() != mesh.number_of_vertices())
-          throw Tool_error(where + " has " + std::to_string(other.number_of_vertices()) + " vertices and " +
-                           std::to_string(other.number_of_faces()) + " faces, the mesh " +
-                           std::to_string(mesh.number_of_vertices()) + " and " + std::to_string(mesh.number_of_faces()));
+        const Mesh_file other = read_mesh_file(file);
         std::string name = source.name;
-        const std::vector<std::string> names = face_field_names(other);
+        const std::vector<std::string> names = other.face_field_names();
         if(name.empty())
         {
           if(names.size() != 1)
@@ -237,11 +298,15 @@ Eigen::VectorXd Tool_mesh::read_field(const Field_source& source) const
                              "): choose one with --field-name");
           name = names.front();
         }
-        Temporary_field other_field(other);
-        if(!TVF::face_field_from_properties(other, name, other_field.map()))
+        const Vectors values = other.face_field(name);
+        if(values.empty())
           throw Tool_error(where + " has no face properties " + name + "_x, " + name + "_y, " + name +
                            "_z (face fields in it: " + list_or_none(names) + ")");
-        for(Face_index f : mesh.faces()) map[f] = other_field.map()[Face_index(static_cast<Mesh::size_type>(f))];
+        if(are_faces_of(other.polygons, mesh))
+          for(Face_index f : mesh.faces())
+            map[f] = K::Vector_3(values[std::size_t(f)][0], values[std::size_t(f)][1], values[std::size_t(f)][2]);
+        else
+          impl_->place(values, where, map);
       }
       else
         throw Tool_error("'" + file + "': unknown field format" + (ext.empty() ? std::string() : " '." + ext + "'") +

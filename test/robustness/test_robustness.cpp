@@ -2,22 +2,18 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 
 // Bad and extreme input (SPEC 9): clear errors, never a crash or a NaN; stiff
-// triangles, mollification, vertices in no face, field files, and a torture run
-// over every mesh of CGAL's data tree.
+// triangles, mollification, vertices in no face, field files.  Soups that need
+// repair, and every mesh of CGAL's data tree, are in test_mesh_repair.cpp.
 
 #include "test_meshes.h"
 
 #include <CGAL/Tangent_vector_fields/face_field_io.h>
 #include <CGAL/Tangent_vector_fields/hodge_decomposition.h>
 
-#include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Surface_mesh/IO/PLY.h>
 
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
-
-#include <dirent.h>
-#include <sys/stat.h>
 
 #include <algorithm>
 #include <fstream>
@@ -327,108 +323,4 @@ TEST(FieldFiles, PlyRoundTripThroughCgalIO)
   ASSERT_TRUE(TVF::face_field_from_properties(back, "velocity", w));
   for(Face_index f : mesh.faces()) EXPECT_EQ(v[f], w[f]);
   EXPECT_FALSE(TVF::face_field_from_properties(back, "absent", w));
-}
-
-TEST(Torture, EveryMeshOfCgalDataTree)
-{
-  const std::string dir = cgal_data_dir();
-  if(dir.empty()) GTEST_SKIP() << "CGAL data tree not found (install libcgal-demo)";
-  std::vector<std::string> files;
-  std::function<void(const std::string&)> walk = [&](const std::string& d) {
-    DIR* handle = opendir(d.c_str());
-    if(!handle) return;
-    while(dirent* entry = readdir(handle))
-    {
-      const std::string name = entry->d_name;
-      if(name == "." || name == "..") continue;
-      const std::string path = d + "/" + name;
-      struct stat info;
-      if(stat(path.c_str(), &info) != 0) continue;
-      if(S_ISDIR(info.st_mode))
-        walk(path);
-      else
-      {
-        const std::string ext = name.substr(name.find_last_of('.') + 1);
-        if(ext == "off" || ext == "obj" || ext == "ply" || ext == "stl") files.push_back(path);
-      }
-    }
-    closedir(handle);
-  };
-  walk(dir);
-  std::sort(files.begin(), files.end());
-  ASSERT_GT(files.size(), 100u);
-
-  int decomposed = 0;
-  std::map<std::string, int> refusals;
-  for(const std::string& path : files)
-  {
-    SCOPED_TRACE(path);
-    const std::string name = path.substr(dir.size() + 1);
-    // Read as a polygon soup so that our own checks, not the reader, say what is wrong.
-    std::vector<Point_3> points;
-    std::vector<std::vector<std::size_t>> polygons;
-    if(!CGAL::IO::read_polygon_soup(path, points, polygons, CGAL::parameters::verbose(false)))
-    {
-      ++refusals["unreadable by CGAL::IO"];
-      std::cout << "  refused " << name << ": unreadable by CGAL::IO\n";
-      continue;
-    }
-    std::vector<std::array<double, 3>> positions;
-    for(const Point_3& p : points) positions.push_back({p.x(), p.y(), p.z()});
-    std::vector<std::array<int, 3>> triangles;
-    bool all_triangles = true;
-    for(const auto& poly : polygons)
-    {
-      if(poly.size() != 3)
-      {
-        all_triangles = false;
-        break;
-      }
-      triangles.push_back({int(poly[0]), int(poly[1]), int(poly[2])});
-    }
-    try
-    {
-      if(!all_triangles) throw TVF::Invalid_mesh(TVF::Mesh_defect::non_triangle_face, "a face is not a triangle");
-      auto mesh = std::make_shared<const TVF::Intrinsic_mesh>(positions, triangles);
-      auto ops = std::make_shared<const TVF::Operator_matrices>(mesh);
-      TVF::Hodge_solver solver(ops);
-      const double defect = decomposition_defect(solver, random_field(mesh->number_of_faces(), 7));
-      EXPECT_LT(defect, 1e-8) << name;
-      const Eigen::MatrixXd& H = solver.harmonic_basis();
-      EXPECT_TRUE(H.allFinite());
-      EXPECT_EQ(H.cols(), mesh->topology().harmonic_dimension());
-      ++decomposed;
-      std::cout << "  decomposed " << name << ": " << mesh->number_of_faces() << " faces, "
-                << mesh->topology().summary() << ", defect " << defect << "\n";
-    }
-    catch(const TVF::Invalid_mesh& e)
-    {
-      static const char* names[] = {"empty",           "non-triangle face", "non-manifold edge",
-                                    "non-manifold vertex", "inconsistent orientation", "garbage",
-                                    "invalid index",   "non-finite coordinate", "degenerate face"};
-      ++refusals[names[static_cast<int>(e.defect())]];
-      EXPECT_GT(std::string(e.what()).size(), 10u);
-      std::cout << "  refused " << name << ": " << e.what() << "\n";
-    }
-    catch(const TVF::Numerical_failure& e)
-    {
-      ADD_FAILURE() << name << ": a mesh the checks accepted failed numerically: " << e.what();
-    }
-  }
-  std::cout << "Torture tally: " << files.size() << " files, " << decomposed << " decomposed";
-  for(const auto& [reason, count] : refusals) std::cout << ", " << count << " refused (" << reason << ")";
-  std::cout << std::endl;
-  // The outcome on Debian 12's data tree (libcgal-demo 5.5.1), pinned: any change fails and
-  // must be looked at (a repair that processes more files updates these numbers).
-  if(files.size() == 154u)
-  {
-    EXPECT_EQ(decomposed, 112);
-    const std::map<std::string, int> expected = {{"degenerate face", 3},          {"empty", 12},
-                                                 {"inconsistent orientation", 4}, {"non-manifold vertex", 2},
-                                                 {"non-triangle face", 21}};
-    EXPECT_EQ(refusals, expected);
-  }
-  else
-    ADD_FAILURE() << "CGAL's data tree has " << files.size() << " mesh files, not the 154 of Debian 12's libcgal-demo: "
-                  << "update the pinned outcome";
 }

@@ -6,6 +6,7 @@
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
+#include <algorithm>
 #include <fstream>
 
 namespace tvf_test {
@@ -258,6 +259,91 @@ Eigen::VectorXd random_field(int number_of_faces, unsigned seed)
   Eigen::VectorXd v(2 * number_of_faces);
   for(Eigen::Index i = 0; i < v.size(); ++i) v[i] = N(gen);
   return v;
+}
+
+Polygon_soup mesh_to_soup(const Mesh& mesh)
+{
+  Polygon_soup soup;
+  for(Vertex_index v : mesh.vertices()) soup.points.push_back(mesh.point(v));
+  for(Face_index f : mesh.faces())
+  {
+    soup.polygons.emplace_back();
+    for(Vertex_index v : vertices_around_face(mesh.halfedge(f), mesh)) soup.polygons.back().push_back(std::size_t(v));
+  }
+  return soup;
+}
+
+Polygon_soup make_quad_torus(int n, int m, double R, double r)
+{
+  Polygon_soup soup;
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < m; ++j)
+    {
+      const double u = 2 * M_PI * i / n, w = 2 * M_PI * j / m;
+      soup.points.emplace_back((R + r * std::cos(w)) * std::cos(u), (R + r * std::cos(w)) * std::sin(u), r * std::sin(w));
+    }
+  auto id = [&](int i, int j) { return std::size_t(((i + n) % n) * m + (j + m) % m); };
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < m; ++j) soup.polygons.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+  return soup;
+}
+
+Polygon_soup shuffled_orientation_soup(const Mesh& mesh, unsigned seed, std::vector<bool>& reversed)
+{
+  Polygon_soup soup = mesh_to_soup(mesh);
+  std::mt19937 gen(seed);
+  std::bernoulli_distribution coin(0.5);
+  reversed.assign(soup.polygons.size(), false);
+  for(std::size_t i = 1; i < soup.polygons.size(); ++i)
+    if(coin(gen))
+    {
+      std::reverse(soup.polygons[i].begin(), soup.polygons[i].end());
+      reversed[i] = true;
+    }
+  return soup;
+}
+
+Polygon_soup make_double_cone(int n)
+{
+  Polygon_soup soup;
+  soup.points.emplace_back(0, 0, 0);
+  for(int side = 0; side < 2; ++side)
+  {
+    const std::size_t first = soup.points.size();
+    for(int k = 0; k < n; ++k)
+    {
+      const double a = 2 * M_PI * k / n;
+      soup.points.emplace_back(std::cos(a), std::sin(a), side == 0 ? 1 : -1);
+    }
+    for(int k = 0; k < n; ++k)
+    {
+      const std::size_t b = first + std::size_t(k), c = first + std::size_t((k + 1) % n);
+      soup.polygons.push_back(side == 0 ? std::vector<std::size_t>{0, b, c} : std::vector<std::size_t>{0, c, b});
+    }
+  }
+  return soup;
+}
+
+Polygon_soup make_moebius_strip(int n)
+{
+  // Points (i, s) for s = -1, +1 across the strip; after a full turn the sides swap.
+  Polygon_soup soup;
+  for(int i = 0; i < n; ++i)
+    for(int s : {-1, 1})
+    {
+      const double u = 2 * M_PI * i / n, w = 0.3 * s;
+      soup.points.emplace_back((1 + w * std::cos(u / 2)) * std::cos(u), (1 + w * std::cos(u / 2)) * std::sin(u),
+                               w * std::sin(u / 2));
+    }
+  for(int i = 0; i < n; ++i)
+  {
+    const std::size_t a = std::size_t(2 * i), b = a + 1;
+    const bool wrap = i + 1 == n;
+    const std::size_t c = wrap ? 1 : a + 2, d = wrap ? 0 : a + 3; // the twist: side -1 meets side +1
+    soup.polygons.push_back({a, c, d});
+    soup.polygons.push_back({a, d, b});
+  }
+  return soup;
 }
 
 } // namespace tvf_test

@@ -70,6 +70,31 @@ Mesh::Property_map<Face_index, Vector_3> ambient_field_map(Mesh& mesh, const std
 /// A white-noise field in frame coordinates (`2 nf` standard normal entries).
 Eigen::VectorXd random_field(int number_of_faces, unsigned seed);
 
+/// A polygon soup, as `CGAL::IO::read_polygon_soup` reads it.
+struct Polygon_soup
+{
+  std::vector<Point_3> points;
+  std::vector<std::vector<std::size_t>> polygons;
+};
+
+/// The faces of `mesh` as a soup (points in vertex order, polygons in face order).
+Polygon_soup mesh_to_soup(const Mesh& mesh);
+
+/// A torus of `n` x `m` quads (not triangulated), radii R and r: every quad is planar
+/// in no particular way, so each triangulation is as good as the other.
+Polygon_soup make_quad_torus(int n, int m, double R = 1.0, double r = 0.4);
+
+/// The triangles of `mesh` as a soup with a random half of them (never the first)
+/// reversed; `reversed[i]` says whether polygon `i` was.
+Polygon_soup shuffled_orientation_soup(const Mesh& mesh, unsigned seed, std::vector<bool>& reversed);
+
+/// Two cones of `n` triangles each, apex to apex: a double cone whose apex (point 0)
+/// is a non-manifold vertex (its faces form two fans); each cone is open at its base.
+Polygon_soup make_double_cone(int n);
+
+/// A Moebius strip of `n` quads, each split into two triangles (a non-orientable surface).
+Polygon_soup make_moebius_strip(int n);
+
 } // namespace tvf_test
 
 #endif

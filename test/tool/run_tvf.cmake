@@ -5,11 +5,13 @@
 #   -DEXPECT=success | failure | usage
 #   -DOUTPUTS=<files, separated by |>   success: each must have been written (they are removed first)
 #   -DSTDOUT=<regular expression>       success: the standard output must match it
-#   -DSTDERR=<regular expression>       failure / usage: the reason on stderr must match it
+#   -DSTDERR=<regular expression>       failure / usage: the reason on stderr must match it;
+#                                       success: the warnings on stderr must match it
 #
-# success: exit code 0 and nothing on stderr (progress bars are drawn on terminals only).
-# failure / usage: exit code 1 / 2, and stderr is exactly one line "tvf: error: <reason>" --
-# never a crash, an abort or a stack trace.
+# success: exit code 0 and nothing on stderr (progress bars are drawn on terminals only), or
+# with STDERR only lines "tvf: warning: ..." that match it.
+# failure / usage: exit code 1 / 2, and stderr ends with exactly one line "tvf: error: <reason>"
+# (after warnings "tvf: warning: ...", if any) -- never a crash, an abort or a stack trace.
 
 string(REPLACE "|" ";" arguments "${ARGS}")
 string(REPLACE "|" ";" outputs "${OUTPUTS}")
@@ -26,7 +28,11 @@ if(EXPECT STREQUAL "success")
   if(NOT code STREQUAL "0")
     message(FATAL_ERROR "${what}\nexpected success, got exit code '${code}'\nstdout:\n${out}\nstderr:\n${err}")
   endif()
-  if(NOT err STREQUAL "")
+  if(DEFINED STDERR AND NOT STDERR STREQUAL "")
+    if(NOT err MATCHES "^(tvf: warning: [^\n]+\n)+$" OR NOT err MATCHES "${STDERR}")
+      message(FATAL_ERROR "${what}\nexpected warnings matching '${STDERR}' on stderr, got:\n${err}")
+    endif()
+  elseif(NOT err STREQUAL "")
     message(FATAL_ERROR "${what}\nexpected an empty stderr, got:\n${err}")
   endif()
   foreach(file IN LISTS outputs)
@@ -51,8 +57,8 @@ else()
   if(NOT code STREQUAL "${expected_code}")
     message(FATAL_ERROR "${what}\nexpected exit code ${expected_code} (${EXPECT}), got '${code}'\nstderr:\n${err}")
   endif()
-  if(NOT err MATCHES "^tvf: error: [^\n]+\n$")
-    message(FATAL_ERROR "${what}\nexpected one line 'tvf: error: ...' on stderr, got:\n${err}")
+  if(NOT err MATCHES "^(tvf: warning: [^\n]+\n)*tvf: error: [^\n]+\n$")
+    message(FATAL_ERROR "${what}\nexpected one line 'tvf: error: ...' on stderr (after warnings), got:\n${err}")
   endif()
   if(DEFINED STDERR AND NOT STDERR STREQUAL "" AND NOT err MATCHES "${STDERR}")
     message(FATAL_ERROR "${what}\nthe reason does not match '${STDERR}':\n${err}")

@@ -76,6 +76,52 @@ void write_face_field(std::ostream& out, const TriangleMesh& mesh, const FaceVec
   if(!out) throw Invalid_input("writing the face field failed");
 }
 
+namespace internal {
+// Comment lines (starting with '#') and white space.
+inline void skip_face_field_comments(std::istream& in)
+{
+  in >> std::ws;
+  while(in.peek() == '#')
+  {
+    std::string line;
+    std::getline(in, line);
+    in >> std::ws;
+  }
+}
+
+// Reads the header of the text format; returns the announced number of vectors.
+inline std::size_t read_face_field_header(std::istream& in)
+{
+  std::string magic, word;
+  int version = 0;
+  long long count = -1;
+  if(!(in >> magic >> version) || magic != "TVF_FACE_FIELD" || version != 1)
+    throw Invalid_input("not a face field file (expected the header 'TVF_FACE_FIELD 1')");
+  skip_face_field_comments(in);
+  if(!(in >> word >> count) || word != "faces" || count < 0)
+    throw Invalid_input("face field file: expected 'faces <count>' after the header");
+  return static_cast<std::size_t>(count);
+}
+
+// Reads `count` vectors after the header.
+inline std::vector<std::array<double, 3>> read_face_field_vectors(std::istream& in, std::size_t count)
+{
+  std::vector<std::array<double, 3>> values;
+  for(std::size_t i = 0; i < count; ++i)
+  {
+    skip_face_field_comments(in);
+    std::array<double, 3> v;
+    for(double& c : v)
+    {
+      if(!(in >> c)) throw Invalid_input("face field file: vector " + std::to_string(i) + " is missing or unreadable");
+      if(!std::isfinite(c)) throw Invalid_input("face field file: vector " + std::to_string(i) + " is not finite");
+    }
+    values.push_back(v);
+  }
+  return values;
+}
+} // namespace internal
+
 /// Reads a field in the text format into `field`.  The map is written only after the
 /// whole input has been read and checked.
 /// \throws Invalid_input for a wrong header, a face count that differs from the
@@ -86,37 +132,21 @@ void read_face_field(std::istream& in, const TriangleMesh& mesh, FaceVectorMap f
 {
   typedef typename boost::property_traits<FaceVectorMap>::value_type Vector_3;
   const auto faces = internal::faces_in_index_order(mesh, np);
-  std::string magic, word;
-  int version = 0;
-  long long count = -1;
-  if(!(in >> magic >> version) || magic != "TVF_FACE_FIELD" || version != 1)
-    throw Invalid_input("not a face field file (expected the header 'TVF_FACE_FIELD 1')");
-  auto skip_comments = [&in]() {
-    in >> std::ws;
-    while(in.peek() == '#')
-    {
-      std::string line;
-      std::getline(in, line);
-      in >> std::ws;
-    }
-  };
-  skip_comments();
-  if(!(in >> word >> count) || word != "faces" || count < 0)
-    throw Invalid_input("face field file: expected 'faces <count>' after the header");
-  if(static_cast<std::size_t>(count) != faces.size())
+  const std::size_t count = internal::read_face_field_header(in);
+  if(count != faces.size())
     throw Invalid_input("face field file has " + std::to_string(count) + " vectors but the mesh has " +
                         std::to_string(faces.size()) + " faces");
-  std::vector<std::array<double, 3>> values(faces.size());
-  for(std::size_t i = 0; i < faces.size(); ++i)
-  {
-    skip_comments();
-    for(double& c : values[i])
-    {
-      if(!(in >> c)) throw Invalid_input("face field file: vector " + std::to_string(i) + " is missing or unreadable");
-      if(!std::isfinite(c)) throw Invalid_input("face field file: vector " + std::to_string(i) + " is not finite");
-    }
-  }
+  const std::vector<std::array<double, 3>> values = internal::read_face_field_vectors(in, count);
   for(std::size_t i = 0; i < faces.size(); ++i) put(field, faces[i], Vector_3(values[i][0], values[i][1], values[i][2]));
+}
+
+/// Reads the vectors of a file in the text format without a mesh: one per face, in the
+/// file's order (for a field given per polygon of a file that `polygon_soup_to_mesh`
+/// repaired, and mapped to the faces with its `face_to_polygon_map`).
+/// \throws Invalid_input for a wrong header, missing or non-finite numbers.
+inline std::vector<std::array<double, 3>> read_face_vectors(std::istream& in)
+{
+  return internal::read_face_field_vectors(in, internal::read_face_field_header(in));
 }
 
 /// File-name versions of `write_face_field` and `read_face_field`.

@@ -12,6 +12,9 @@ TVF_add_named_parameter(harmonic_part_map_t, harmonic_part_map, harmonic_part_ma
 TVF_add_named_parameter(potential_map_t, potential_map, potential_map)
 TVF_add_named_parameter(copotential_map_t, copotential_map, copotential_map)
 
+// Polygon soup to mesh: for every face, the index of the polygon it comes from
+TVF_add_named_parameter(face_to_polygon_map_t, face_to_polygon_map, face_to_polygon_map)
+
 // Construction of the intrinsic geometry
 TVF_add_named_parameter(use_intrinsic_mollification_t, use_intrinsic_mollification, use_intrinsic_mollification)
 TVF_add_named_parameter(mollification_epsilon_t, mollification_epsilon, mollification_epsilon)

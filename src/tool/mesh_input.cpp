@@ -1,0 +1,139 @@
+// Copyright (c) 2026 The Tangent_vector_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Mesh files as polygon soups, through CGAL's readers; PLY face properties through
+// CGAL's PLY parser, since the soup readers drop them.
+
+#include "mesh_input.h"
+
+#include "tool.h"
+
+#include <CGAL/IO/GOCAD.h>
+#include <CGAL/IO/OBJ.h>
+#include <CGAL/IO/OFF.h>
+#include <CGAL/IO/PLY.h>
+#include <CGAL/IO/STL.h>
+
+#include <array>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <set>
+
+namespace tvf_tool {
+
+namespace {
+
+// The `double` and `float` properties of the face elements of a PLY file, in file order;
+// false if the file cannot be parsed.
+bool read_ply_face_properties(const std::string& path, std::vector<std::pair<std::string, std::vector<double>>>& out)
+{
+  namespace ply = CGAL::IO::internal;
+  std::ifstream in(path, std::ios::binary);
+  ply::PLY_reader reader(false);
+  if(!in || !reader.init(in)) return false;
+  for(std::size_t i = 0; i < reader.number_of_elements(); ++i)
+  {
+    ply::PLY_element& element = reader.element(i);
+    const bool is_face = element.name() == "face" || element.name() == "faces";
+    std::vector<std::pair<std::size_t, std::size_t>> wanted; // (property, entry of out)
+    if(is_face)
+      for(std::size_t k = 0; k < element.number_of_properties(); ++k)
+      {
+        ply::PLY_read_number* p = element.property(k);
+        if(dynamic_cast<ply::PLY_read_typed_number<double>*>(p) || dynamic_cast<ply::PLY_read_typed_number<float>*>(p))
+        {
+          wanted.emplace_back(k, out.size());
+          out.emplace_back(p->name(), std::vector<double>());
+        }
+      }
+    for(std::size_t j = 0; j < element.number_of_items(); ++j)
+    {
+      for(std::size_t k = 0; k < element.number_of_properties(); ++k)
+      {
+        element.property(k)->get(in);
+        if(in.fail()) return false;
+      }
+      for(const auto& [k, entry] : wanted)
+      {
+        ply::PLY_read_number* p = element.property(k);
+        if(auto* d = dynamic_cast<ply::PLY_read_typed_number<double>*>(p))
+          out[entry].second.push_back(d->buffer());
+        else
+          out[entry].second.push_back(dynamic_cast<ply::PLY_read_typed_number<float>*>(p)->buffer());
+      }
+    }
+  }
+  return true;
+}
+
+} // namespace
+
+std::vector<std::string> Mesh_file::face_field_names() const
+{
+  std::set<std::string> names;
+  for(const auto& p : face_properties) names.insert(p.first);
+  std::vector<std::string> fields;
+  for(const auto& p : face_properties)
+  {
+    const std::string& n = p.first;
+    if(n.size() < 3 || n.compare(n.size() - 2, 2, "_x") != 0) continue;
+    const std::string base = n.substr(0, n.size() - 2);
+    if(names.count(base + "_y") && names.count(base + "_z")) fields.push_back(base);
+  }
+  return fields;
+}
+
+std::vector<std::array<double, 3>> Mesh_file::face_field(const std::string& name) const
+{
+  const std::vector<double>* axes[3] = {nullptr, nullptr, nullptr};
+  const char* suffix[3] = {"_x", "_y", "_z"};
+  for(const auto& p : face_properties)
+    for(int k = 0; k < 3; ++k)
+      if(p.first == name + suffix[k]) axes[k] = &p.second;
+  std::vector<std::array<double, 3>> vectors;
+  if(!axes[0] || !axes[1] || !axes[2]) return vectors;
+  for(std::size_t i = 0; i < axes[0]->size(); ++i) vectors.push_back({{(*axes[0])[i], (*axes[1])[i], (*axes[2])[i]}});
+  return vectors;
+}
+
+Mesh_file read_mesh_file(const std::string& path)
+{
+  {
+    std::ifstream probe(path);
+    if(!probe) throw Tool_error("cannot open mesh file '" + path + "': " + std::strerror(errno));
+  }
+  const std::string ext = extension(path);
+  static const std::set<std::string> formats = {"off", "obj", "ply", "stl", "ts"};
+  if(!formats.count(ext))
+    throw Tool_error("'" + path + "': unknown mesh format" + (ext.empty() ? std::string() : " '." + ext + "'") +
+                     " (the tool reads .off, .obj, .ply, .stl and .ts)");
+  Mesh_file file;
+  bool ok = false;
+  try
+  {
+    // By our lower-case extension: CGAL's dispatch (read_polygon_soup) wants it in lower case.
+    const auto np = CGAL::parameters::verbose(false);
+    if(ext == "off") ok = CGAL::IO::read_OFF(path, file.points, file.polygons, np);
+    else if(ext == "obj") ok = CGAL::IO::read_OBJ(path, file.points, file.polygons, np);
+    else if(ext == "stl") ok = CGAL::IO::read_STL(path, file.points, file.polygons, np);
+    else if(ext == "ts") ok = CGAL::IO::read_GOCAD(path, file.points, file.polygons, np);
+    else if((ok = CGAL::IO::read_PLY(path, file.points, file.polygons, np)))
+    {
+      // The mesh is what counts: a PLY whose properties this parser cannot follow just has none.
+      if(!read_ply_face_properties(path, file.face_properties)) file.face_properties.clear();
+    }
+  }
+  catch(const std::exception& e)
+  {
+    throw Tool_error("cannot read a mesh from '" + path + "': " + one_line(e.what()));
+  }
+  if(!ok) throw Tool_error("cannot read a polygon mesh from '" + path + "' (malformed file)");
+  for(const auto& p : file.face_properties)
+    if(p.second.size() != file.polygons.size())
+      throw Tool_error("'" + path + "': face property '" + p.first + "' has " + std::to_string(p.second.size()) +
+                       " values for " + std::to_string(file.polygons.size()) + " faces");
+  return file;
+}
+
+} // namespace tvf_tool

@@ -1,0 +1,476 @@
+// Copyright (c) 2026 The Tangent_vector_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+// polygon_soup_to_mesh: polygon meshes triangulated, soups oriented, non-manifold
+// vertices and edges cut apart, degenerate and duplicate polygons removed, each checked
+// against what the soup was built to be (counts, Euler characteristic, orientation of
+// every edge, the face map); bad soups refused.  And the outcome on every mesh file of
+// CGAL's data tree against a golden table (robustness/cgal_data_tree.golden).
+
+#include "test_meshes.h"
+
+#include <CGAL/Tangent_vector_fields/hodge_decomposition.h>
+#include <CGAL/Tangent_vector_fields/polygon_soup_to_mesh.h>
+
+#include <CGAL/IO/polygon_soup_io.h>
+
+#include <gtest/gtest.h>
+
+#include <dirent.h>
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <set>
+
+namespace TVF = CGAL::Tangent_vector_fields;
+using namespace tvf_test;
+
+namespace {
+
+typedef Mesh::Property_map<Face_index, std::size_t> Origin_map;
+
+struct Repaired
+{
+  Mesh mesh;
+  TVF::Mesh_repair_report report;
+  std::vector<std::size_t> origin; // per face, in face index order
+};
+
+Repaired repair(const Polygon_soup& soup)
+{
+  Repaired r;
+  Origin_map origin = r.mesh.add_property_map<Face_index, std::size_t>("f:origin", 99999).first;
+  r.report = TVF::polygon_soup_to_mesh(soup.points, soup.polygons, r.mesh, TVF::parameters::face_to_polygon_map(origin));
+  for(Face_index f : r.mesh.faces()) r.origin.push_back(origin[f]);
+  return r;
+}
+
+int euler_characteristic(const Mesh& m)
+{
+  return int(m.number_of_vertices()) - int(m.number_of_edges()) + int(m.number_of_faces());
+}
+
+// Directed edges (source, target point index) of every face, counted.
+std::map<std::pair<std::size_t, std::size_t>, int> directed_edges(const Mesh& m)
+{
+  std::map<std::pair<std::size_t, std::size_t>, int> count;
+  for(Face_index f : m.faces())
+  {
+    std::vector<std::size_t> v;
+    for(Vertex_index x : vertices_around_face(m.halfedge(f), m)) v.push_back(std::size_t(x));
+    for(std::size_t k = 0; k < v.size(); ++k) ++count[{v[k], v[(k + 1) % v.size()]}];
+  }
+  return count;
+}
+
+// Every edge is traversed at most once in each direction, and an edge of two faces
+// once in each direction: the faces are consistently oriented.
+void expect_consistently_oriented(const Mesh& m)
+{
+  const auto count = directed_edges(m);
+  for(const auto& [e, n] : count)
+  {
+    EXPECT_EQ(n, 1) << "edge " << e.first << "-" << e.second << " traversed " << n << " times in one direction";
+  }
+}
+
+} // namespace
+
+TEST(Repair, TriangleMeshComesOutUnchanged)
+{
+  const Mesh torus = make_torus(12, 7);
+  const Polygon_soup soup = mesh_to_soup(torus);
+  const Repaired r = repair(soup);
+  EXPECT_FALSE(r.report.changed()) << r.report;
+  EXPECT_TRUE(r.report.faces_match_polygons);
+  EXPECT_EQ(r.report.summary(), "no repairs");
+  ASSERT_EQ(r.mesh.number_of_vertices(), soup.points.size());
+  ASSERT_EQ(r.mesh.number_of_faces(), soup.polygons.size());
+  for(Vertex_index v : r.mesh.vertices()) EXPECT_EQ(r.mesh.point(v), soup.points[std::size_t(v)]);
+  for(Face_index f : r.mesh.faces())
+  {
+    EXPECT_EQ(r.origin[std::size_t(f)], std::size_t(f));
+    std::vector<std::size_t> v;
+    for(Vertex_index x : vertices_around_face(r.mesh.halfedge(f), r.mesh)) v.push_back(std::size_t(x));
+    // The same cyclic sequence as the polygon.
+    const auto& p = soup.polygons[std::size_t(f)];
+    const std::size_t shift = std::size_t(std::find(v.begin(), v.end(), p[0]) - v.begin());
+    for(std::size_t k = 0; k < 3; ++k) EXPECT_EQ(v[(shift + k) % 3], p[k]);
+  }
+}
+
+TEST(Repair, QuadTorusIsTriangulated)
+{
+  const int n = 10, m = 6;
+  const Polygon_soup soup = make_quad_torus(n, m);
+  const Repaired r = repair(soup);
+  EXPECT_EQ(r.report.triangulated_polygons, std::size_t(n * m));
+  EXPECT_EQ(r.report.triangles_from_polygons, std::size_t(2 * n * m));
+  EXPECT_EQ(r.report.reoriented_polygons, 0u);
+  EXPECT_EQ(r.report.duplicated_vertices, 0u);
+  EXPECT_FALSE(r.report.faces_match_polygons);
+  EXPECT_EQ(r.report.summary(), "60 polygons triangulated into 120 triangles");
+  // A torus: V = nm, F = 2nm, E = 3nm, chi = 0, genus 1, harmonic dimension 2.
+  EXPECT_EQ(r.mesh.number_of_vertices(), std::size_t(n * m));
+  EXPECT_EQ(r.mesh.number_of_faces(), std::size_t(2 * n * m));
+  EXPECT_EQ(euler_characteristic(r.mesh), 0);
+  expect_consistently_oriented(r.mesh);
+  // Each quad became two consecutive triangles, which together use its four vertices
+  // and nothing else: a value given per quad goes to both.
+  std::vector<std::set<std::size_t>> used(soup.polygons.size());
+  for(Face_index f : r.mesh.faces())
+  {
+    const std::size_t q = r.origin[std::size_t(f)];
+    EXPECT_EQ(q, std::size_t(f) / 2);
+    for(Vertex_index x : vertices_around_face(r.mesh.halfedge(f), r.mesh)) used[q].insert(std::size_t(x));
+  }
+  for(std::size_t q = 0; q < soup.polygons.size(); ++q)
+    EXPECT_EQ(used[q], std::set<std::size_t>(soup.polygons[q].begin(), soup.polygons[q].end())) << "quad " << q;
+  TVF::Hodge_decomposition<Mesh> hodge(r.mesh);
+  EXPECT_EQ(hodge.topology().number_of_components(), 1);
+  EXPECT_EQ(hodge.topology().total_genus(), 1);
+  EXPECT_EQ(hodge.harmonic_dimension(), 2);
+  EXPECT_EQ(hodge.solver().harmonic_basis().cols(), 2);
+}
+
+TEST(Repair, LargerPolygonsAreTriangulated)
+{
+  // A hexagonal prism: two hexagons and six quads; a closed genus-0 surface.
+  Polygon_soup soup;
+  for(int z : {0, 1})
+    for(int k = 0; k < 6; ++k) soup.points.emplace_back(std::cos(M_PI * k / 3), std::sin(M_PI * k / 3), z);
+  soup.polygons.push_back({5, 4, 3, 2, 1, 0});
+  soup.polygons.push_back({6, 7, 8, 9, 10, 11});
+  for(std::size_t k = 0; k < 6; ++k) soup.polygons.push_back({k, (k + 1) % 6, 6 + (k + 1) % 6, 6 + k});
+  const Repaired r = repair(soup);
+  EXPECT_EQ(r.report.triangulated_polygons, 8u);
+  EXPECT_EQ(r.report.triangles_from_polygons, 2 * 4 + 6 * 2u);
+  EXPECT_EQ(r.mesh.number_of_faces(), 20u);
+  EXPECT_EQ(euler_characteristic(r.mesh), 2);
+  expect_consistently_oriented(r.mesh);
+  TVF::Hodge_decomposition<Mesh> hodge(r.mesh);
+  EXPECT_EQ(hodge.harmonic_dimension(), 0);
+  // Triangles of one polygon follow each other, in polygon order.
+  EXPECT_TRUE(std::is_sorted(r.origin.begin(), r.origin.end()));
+  EXPECT_EQ(std::count(r.origin.begin(), r.origin.end(), 0u), 4);
+}
+
+TEST(Repair, ShuffledOrientationsAreMadeConsistent)
+{
+  const Mesh sphere = make_icosphere(2);
+  std::vector<bool> reversed;
+  const Polygon_soup soup = shuffled_orientation_soup(sphere, 3, reversed);
+  const std::size_t flipped = std::size_t(std::count(reversed.begin(), reversed.end(), true));
+  ASSERT_GT(flipped, 50u);
+  const Repaired r = repair(soup);
+  // Polygon 0 was not reversed, so the orientation is the sphere's: exactly the
+  // reversed polygons are turned back.
+  EXPECT_EQ(r.report.reoriented_polygons, flipped);
+  EXPECT_TRUE(r.report.faces_match_polygons);
+  EXPECT_EQ(r.report.duplicated_vertices, 0u);
+  ASSERT_EQ(r.mesh.number_of_faces(), sphere.number_of_faces());
+  expect_consistently_oriented(r.mesh);
+  const auto original = directed_edges(sphere), repaired = directed_edges(r.mesh);
+  EXPECT_EQ(original, repaired);
+  EXPECT_EQ(euler_characteristic(r.mesh), 2);
+}
+
+TEST(Repair, NonManifoldVertexIsDuplicated)
+{
+  const int n = 7;
+  const Polygon_soup soup = make_double_cone(n);
+  const Repaired r = repair(soup);
+  EXPECT_EQ(r.report.non_manifold_vertices, 1u);
+  EXPECT_EQ(r.report.duplicated_vertices, 1u);
+  EXPECT_EQ(r.report.reoriented_polygons, 0u);
+  EXPECT_TRUE(r.report.faces_match_polygons);
+  EXPECT_EQ(r.report.summary(), "1 non-manifold vertex duplicated (1 new vertex)");
+  EXPECT_EQ(r.mesh.number_of_vertices(), soup.points.size() + 1);
+  // The copy sits where the apex was; the two cones are two disks (chi = 1 each).
+  EXPECT_EQ(r.mesh.point(Vertex_index(Mesh::size_type(soup.points.size()))), soup.points[0]);
+  EXPECT_EQ(euler_characteristic(r.mesh), 2);
+  TVF::Hodge_decomposition<Mesh> hodge(r.mesh);
+  EXPECT_EQ(hodge.topology().number_of_components(), 2);
+  EXPECT_EQ(hodge.topology().number_of_boundary_loops(), 2);
+  EXPECT_EQ(hodge.harmonic_dimension(), 0);
+}
+
+TEST(Repair, BowtieAndNonManifoldEdge)
+{
+  // Two triangles touching at point 2 only.
+  Polygon_soup bowtie;
+  bowtie.points = {{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0, 2, 0}, {1, 2, 0}};
+  bowtie.polygons = {{0, 1, 2}, {2, 4, 3}};
+  const Repaired b = repair(bowtie);
+  EXPECT_EQ(b.report.non_manifold_vertices, 1u);
+  EXPECT_EQ(b.report.duplicated_vertices, 1u);
+  EXPECT_EQ(b.mesh.number_of_vertices(), 6u);
+  EXPECT_NO_THROW(TVF::Discrete_operators<Mesh> ops(b.mesh));
+
+  // Three triangles on edge 0-1: the edge is cut apart.
+  Polygon_soup book;
+  book.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}};
+  book.polygons = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}};
+  const Repaired e = repair(book);
+  EXPECT_EQ(e.report.non_manifold_edges, 1u);
+  EXPECT_GE(e.report.duplicated_vertices, 2u);
+  EXPECT_NE(e.report.summary().find("1 non-manifold edge cut apart"), std::string::npos) << e.report;
+  expect_consistently_oriented(e.mesh);
+  TVF::Hodge_decomposition<Mesh> hodge(e.mesh);
+  EXPECT_EQ(hodge.topology().number_of_components() + hodge.harmonic_dimension(), 3) << hodge.topology().summary();
+}
+
+TEST(Repair, MoebiusStripIsCutOpen)
+{
+  // Not orientable: orient_polygon_soup cuts it along an edge where the orientation
+  // cannot be made consistent, duplicating the edge's ends.  What is left is a disk.
+  const int n = 12;
+  const Polygon_soup soup = make_moebius_strip(n);
+  const Repaired r = repair(soup);
+  EXPECT_GT(r.report.duplicated_vertices, 0u);
+  EXPECT_TRUE(r.report.faces_match_polygons);
+  expect_consistently_oriented(r.mesh);
+  EXPECT_EQ(r.mesh.number_of_faces(), std::size_t(2 * n));
+  TVF::Hodge_decomposition<Mesh> hodge(r.mesh);
+  EXPECT_EQ(hodge.topology().number_of_components(), 1);
+  EXPECT_EQ(hodge.topology().total_genus(), 0);
+  EXPECT_EQ(hodge.harmonic_dimension(), hodge.topology().number_of_boundary_loops() - 1);
+  EXPECT_EQ(hodge.solver().harmonic_basis().cols(), hodge.harmonic_dimension());
+}
+
+TEST(Repair, DegenerateDuplicateAndPinchedPolygons)
+{
+  Polygon_soup soup = mesh_to_soup(make_disk(3));
+  const std::size_t n = soup.polygons.size(), p = soup.points.size();
+  soup.points.emplace_back(5, 5, 0);
+  soup.points.emplace_back(6, 5, 0);
+  soup.points.emplace_back(5, 6, 0);
+  soup.points.emplace_back(6, 6, 0);
+  soup.points.emplace_back(7, 5.5, 0);
+  soup.polygons.push_back({p, p, p + 1});                        // n: degenerate, removed
+  soup.polygons.push_back(soup.polygons[0]);                     // n+1: duplicate of 0, removed
+  soup.polygons.push_back({p, p + 1, p + 1, p + 2});             // n+2: repeat dropped: a triangle
+  soup.polygons.push_back({p + 1, p + 4, p + 3, p + 1, p + 3, p + 2}); // n+3: pinched at p+1, twice at p+3
+  const Repaired r = repair(soup);
+  EXPECT_EQ(r.report.removed_degenerate_polygons, 1u);
+  EXPECT_EQ(r.report.removed_duplicate_polygons, 1u);
+  EXPECT_EQ(r.report.simplified_polygons, 1u);
+  EXPECT_EQ(r.report.split_polygons, 1u);
+  EXPECT_FALSE(r.report.faces_match_polygons);
+  // The disk's n faces, the simplified triangle p p+1 p+2, and the two halves of the
+  // pinched polygon, p+1 p+4 p+3 and p+1 p+3 p+2: n + 3 faces.
+  EXPECT_EQ(r.mesh.number_of_faces(), n + 3);
+  const std::multiset<std::size_t> origins(r.origin.begin(), r.origin.end());
+  EXPECT_EQ(origins.count(n), 0u);
+  EXPECT_EQ(origins.count(n + 1), 0u);
+  EXPECT_EQ(origins.count(n + 2), 1u);
+  EXPECT_EQ(origins.count(n + 3), 2u);
+  EXPECT_NO_THROW(TVF::Discrete_operators<Mesh> ops(r.mesh));
+}
+
+TEST(Repair, BadSoupsAreRefusedWithoutTouchingTheMesh)
+{
+  Polygon_soup soup = mesh_to_soup(make_icosphere(1));
+  soup.polygons[4][1] = 1000;
+  Mesh mesh;
+  try
+  {
+    TVF::polygon_soup_to_mesh(soup.points, soup.polygons, mesh);
+    ADD_FAILURE() << "accepted";
+  }
+  catch(const TVF::Invalid_mesh& e)
+  {
+    EXPECT_EQ(e.defect(), TVF::Mesh_defect::invalid_index);
+    EXPECT_NE(std::string(e.what()).find("polygon 4 refers to point 1000"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(mesh.number_of_vertices(), 0u);
+
+  soup = mesh_to_soup(make_icosphere(1));
+  soup.points[7] = Point_3(0, std::nan(""), 0);
+  try
+  {
+    TVF::polygon_soup_to_mesh(soup.points, soup.polygons, mesh);
+    ADD_FAILURE() << "accepted";
+  }
+  catch(const TVF::Invalid_mesh& e)
+  {
+    EXPECT_EQ(e.defect(), TVF::Mesh_defect::non_finite_coordinate);
+    EXPECT_NE(std::string(e.what()).find("point 7"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(mesh.number_of_vertices(), 0u);
+
+  // Nothing but degenerate polygons: an empty mesh, which the operators refuse.
+  Polygon_soup flat;
+  flat.points = {{0, 0, 0}, {1, 0, 0}};
+  flat.polygons = {{0, 1, 0}, {1, 1, 1}};
+  const Repaired r = repair(flat);
+  EXPECT_EQ(r.report.removed_degenerate_polygons, 2u);
+  EXPECT_EQ(r.mesh.number_of_faces(), 0u);
+  EXPECT_THROW(TVF::Discrete_operators<Mesh> ops(r.mesh), TVF::Invalid_mesh);
+}
+
+// --- CGAL's data tree: a golden table of outcomes -------------------------------------------
+
+namespace {
+
+// Every .off, .obj, .ply and .stl file under `dir`, as paths relative to it, sorted.
+std::vector<std::string> mesh_files(const std::string& dir)
+{
+  std::vector<std::string> files;
+  std::function<void(const std::string&)> walk = [&](const std::string& relative) {
+    DIR* handle = opendir((dir + "/" + relative).c_str());
+    if(!handle) return;
+    while(dirent* entry = readdir(handle))
+    {
+      const std::string name = entry->d_name;
+      if(name == "." || name == "..") continue;
+      const std::string path = relative.empty() ? name : relative + "/" + name;
+      struct stat info;
+      if(stat((dir + "/" + path).c_str(), &info) != 0) continue;
+      const std::string ext = name.substr(name.find_last_of('.') + 1);
+      if(S_ISDIR(info.st_mode))
+        walk(path);
+      else if(ext == "off" || ext == "obj" || ext == "ply" || ext == "stl")
+        files.push_back(path);
+    }
+    closedir(handle);
+  };
+  walk("");
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+const char* defect_name(TVF::Mesh_defect d)
+{
+  static const char* names[] = {"empty",          "non-triangle-face", "non-manifold-edge",
+                                "non-manifold-vertex", "inconsistent-orientation", "garbage",
+                                "invalid-index",  "non-finite-coordinate", "degenerate-face"};
+  return names[static_cast<int>(d)];
+}
+
+// The repairs in one word: "-" for none, else e.g. "triangulated=6:12,reoriented=3".
+std::string repair_tags(const TVF::Mesh_repair_report& r)
+{
+  std::string s;
+  auto add = [&s](const std::string& tag, std::size_t n, std::size_t m = 0) {
+    if(n == 0) return;
+    s += (s.empty() ? "" : ",") + tag + "=" + std::to_string(n) + (m ? ":" + std::to_string(m) : "");
+  };
+  add("simplified", r.simplified_polygons);
+  add("split", r.split_polygons);
+  add("degenerate", r.removed_degenerate_polygons);
+  add("duplicates", r.removed_duplicate_polygons);
+  add("triangulated", r.triangulated_polygons, r.triangles_from_polygons);
+  add("reoriented", r.reoriented_polygons);
+  add("edges", r.non_manifold_edges);
+  add("vertices", r.duplicated_vertices);
+  return s.empty() ? "-" : s;
+}
+
+// Frame-level decomposition check: the worst of the relative residual of the sum and
+// the relative inner products of the parts.
+double decomposition_defect(const TVF::Hodge_solver& solver, const Eigen::VectorXd& v)
+{
+  const auto p = solver.decompose(v, TVF::hodge_exact | TVF::hodge_coexact | TVF::hodge_harmonic);
+  if(!p.exact.allFinite() || !p.coexact.allFinite() || !p.harmonic.allFinite()) return HUGE_VAL;
+  const Eigen::VectorXd& mx = solver.operators().field_masses();
+  auto dot = [&](const Eigen::VectorXd& a, const Eigen::VectorXd& b) { return a.dot(mx.cwiseProduct(b)); };
+  const double n2 = dot(v, v);
+  const Eigen::VectorXd r = p.exact + p.coexact + p.harmonic - v;
+  return std::max({std::sqrt(dot(r, r) / n2), std::abs(dot(p.exact, p.coexact)) / n2,
+                   std::abs(dot(p.exact, p.harmonic)) / n2, std::abs(dot(p.coexact, p.harmonic)) / n2});
+}
+
+// One row of the table: "<outcome> <faces> <harmonic dimension> <repairs>".
+std::string outcome_of(const std::string& path)
+{
+  std::vector<Point_3> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  if(!CGAL::IO::read_polygon_soup(path, points, polygons, CGAL::parameters::verbose(false)))
+    return "refused:unreadable 0 - -";
+  Mesh mesh;
+  TVF::Mesh_repair_report report;
+  try
+  {
+    report = TVF::polygon_soup_to_mesh(points, polygons, mesh);
+  }
+  catch(const TVF::Invalid_mesh& e)
+  {
+    return std::string("refused:") + defect_name(e.defect()) + " 0 - -";
+  }
+  const std::string faces = std::to_string(mesh.number_of_faces()), tags = repair_tags(report);
+  for(bool mollify : {false, true})
+  {
+    try
+    {
+      TVF::Hodge_decomposition<Mesh> hodge(mesh, TVF::parameters::use_intrinsic_mollification(mollify));
+      const TVF::Hodge_solver& solver = hodge.solver();
+      const double defect = decomposition_defect(solver, random_field(int(mesh.number_of_faces()), 7));
+      EXPECT_LT(defect, 1e-8);
+      EXPECT_TRUE(solver.harmonic_basis().allFinite());
+      // The numerical rank of the harmonic basis against the topology's 2g + b - 1 per component.
+      const int dimension = int(solver.harmonic_basis().cols());
+      EXPECT_EQ(dimension, hodge.topology().harmonic_dimension()) << hodge.topology().summary();
+      return std::string(mollify ? "mollified " : "processed ") + faces + " " + std::to_string(dimension) + " " + tags;
+    }
+    catch(const TVF::Invalid_mesh& e)
+    {
+      if(e.defect() != TVF::Mesh_defect::degenerate_face || mollify)
+        return std::string("refused:") + defect_name(e.defect()) + " " + faces + " - " + tags;
+    }
+    catch(const TVF::Numerical_failure& e)
+    {
+      ADD_FAILURE() << "a mesh the checks accepted failed numerically: " << e.what();
+      return "failed " + faces + " - " + tags;
+    }
+  }
+  return "unreachable";
+}
+
+} // namespace
+
+TEST(DataTree, GoldenTable)
+{
+  const std::string dir = cgal_data_dir();
+  if(dir.empty()) GTEST_SKIP() << "CGAL data tree not found (install libcgal-demo)";
+  const std::vector<std::string> files = mesh_files(dir);
+  ASSERT_GT(files.size(), 100u);
+
+  std::map<std::string, std::string> golden;
+  std::ifstream table(TVF_GOLDEN_TABLE);
+  ASSERT_TRUE(table) << "cannot read " << TVF_GOLDEN_TABLE;
+  for(std::string line; std::getline(table, line);)
+  {
+    if(line.empty() || line[0] == '#') continue;
+    const std::size_t space = line.find(' ');
+    golden[line.substr(0, space)] = line.substr(line.find_first_not_of(' ', space));
+  }
+
+  // TVF_WRITE_GOLDEN=<file>: write the table found here (to review and commit after a change).
+  const char* write_to = std::getenv("TVF_WRITE_GOLDEN");
+  std::ofstream out;
+  if(write_to) out.open(write_to);
+  std::map<std::string, int> tally;
+  for(const std::string& name : files)
+  {
+    SCOPED_TRACE(name);
+    const std::string outcome = outcome_of(dir + "/" + name);
+    ++tally[outcome.substr(0, outcome.find(' '))];
+    if(out) out << name << ' ' << outcome << '\n';
+    const auto expected = golden.find(name);
+    if(expected == golden.end())
+      ADD_FAILURE() << name << ": not in the golden table (" << outcome << ")";
+    else
+      EXPECT_EQ(expected->second, outcome) << name << ": the outcome changed";
+  }
+  for(const auto& [name, row] : golden)
+    if(!std::binary_search(files.begin(), files.end(), name))
+      ADD_FAILURE() << name << ": in the golden table but not in the data tree";
+  std::cout << "Data tree tally: " << files.size() << " files";
+  for(const auto& [outcome, count] : tally) std::cout << ", " << count << " " << outcome;
+  std::cout << std::endl;
+}
