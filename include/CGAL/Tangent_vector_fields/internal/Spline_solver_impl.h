@@ -38,8 +38,10 @@ template <class Constraint, class Operators>
 void Basic_spline_solver<Constraint, Operators>::set_scales()
 {
   // The energy is E_B + omega E_D with omega given on the unit-area mesh: lambda
-  // scales as 1/area, so omega as 1/area too.
-  const double area = operators_->face_areas().sum();
+  // scales as 1/area, so omega as 1/area too.  Areas in the solver's length unit
+  // (see `length_unit_`).
+  length_unit_ = internal::spline_length_unit(*operators_);
+  const double area = operators_->face_areas().sum() / length_unit_ / length_unit_;
   omega_ = options_.omega / area;
   const double lambda = 1 / area;
   harmonic_scale_ = lambda * lambda + omega_ * lambda;
@@ -280,7 +282,7 @@ void Basic_spline_solver<Constraint, Operators>::make_report() const
     residual = std::max(residual, std::abs(apply(rows_[i], solution_) - c));
   }
   r.constraint_residual = largest > 0 ? residual / largest : residual;
-  r.energy = energy(solution_);
+  r.energy = energy(solution_) / length_unit_ / length_unit_; // for the mesh as given
   if(n > 0 && r.smallest_independence < options_.warning_tolerance)
   {
     std::ostringstream s;
