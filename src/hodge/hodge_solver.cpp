@@ -217,6 +217,15 @@ Hodge_parts Hodge_solver::decompose(const Eigen::VectorXd& field, unsigned outpu
     g = copotentials(field);
     coexact = ops_->rotate(ops_->G_star() * g);
   }
+  // Finite input, finite operators: a non-finite part means an overflow (a field near
+  // the largest double); say so instead of handing back NaNs.
+  if(!f.allFinite() || !g.allFinite() || !exact.allFinite() || !coexact.allFinite())
+  {
+    std::ostringstream msg;
+    msg << "the Hodge decomposition overflowed (non-finite potentials): the field's coordinates, up to "
+        << field.cwiseAbs().maxCoeff() << ", are too large for double precision";
+    throw Numerical_failure(msg.str());
+  }
   if(outputs & hodge_harmonic) parts.harmonic = field - exact - coexact;
   if(outputs & hodge_exact) parts.exact = std::move(exact);
   if(outputs & hodge_coexact) parts.coexact = std::move(coexact);

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace CGAL {
@@ -253,12 +254,24 @@ void Basic_spline_solver<Constraint, Operators>::solve() const
   const Eigen::VectorXd& x0 = unconstrained_minimiser();
   Eigen::VectorXd c(n);
   for(int i = 0; i < n; ++i) c[i] = rows_[i].row.value - (x0.size() > 0 ? apply(rows_[i], x0) : 0.);
+  // The spline is linear in the values: solved for values scaled to at most 1 (by a
+  // power of two, exact) and scaled back, so that values near the largest double
+  // overflow only if the field itself does.
+  const double largest = c.size() > 0 ? c.cwiseAbs().maxCoeff() : 0.;
+  const double scale = largest > 0 && std::isfinite(largest) ? std::ldexp(1., std::ilogb(largest) + 1) : 1.;
   Eigen::VectorXd mu, z;
-  system_->solve(c, mu, z);
-  solution_ = x0.size() > 0 ? x0 : Eigen::VectorXd::Zero(space_dimension());
-  for(int i = 0; i < n; ++i) solution_ += mu[i] * rows_[i].y;
-  if(z.size() > 0) add_harmonic(z, solution_);
-  if(!solution_.allFinite()) throw Numerical_failure("the spline solve produced non-finite values");
+  system_->solve(c / scale, mu, z);
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(space_dimension());
+  for(int i = 0; i < n; ++i) x += mu[i] * rows_[i].y;
+  if(z.size() > 0) add_harmonic(z, x);
+  solution_ = x * scale;
+  if(x0.size() > 0) solution_ += x0;
+  if(!solution_.allFinite())
+  {
+    std::ostringstream s;
+    s << "the spline is not finite in double precision: its constraint values reach " << largest;
+    throw Numerical_failure(s.str());
+  }
   solved_ = true;
   reported_ = false;
 }
@@ -282,7 +295,14 @@ void Basic_spline_solver<Constraint, Operators>::make_report() const
     residual = std::max(residual, std::abs(apply(rows_[i], solution_) - c));
   }
   r.constraint_residual = largest > 0 ? residual / largest : residual;
-  r.energy = energy(solution_) / length_unit_ / length_unit_; // for the mesh as given
+  // For the mesh as given; a quadratic energy (no linear term, no offset) from the
+  // solution scaled to near 1, so that its squares cannot overflow.
+  {
+    const double largest = solution_.size() > 0 ? solution_.cwiseAbs().maxCoeff() : 0.;
+    const bool quadratic = unconstrained_minimiser().size() == 0;
+    const double scale = quadratic && largest > 0 ? std::ldexp(1., std::ilogb(largest)) : 1.;
+    r.energy = energy(solution_ / scale) / length_unit_ / length_unit_ * scale * scale;
+  }
   if(n > 0 && r.smallest_independence < options_.warning_tolerance)
   {
     std::ostringstream s;
@@ -300,7 +320,12 @@ void Basic_spline_solver<Constraint, Operators>::make_report() const
       << " of the energy scale): it may be large";
     r.warnings.push_back(s.str());
   }
-  if(!std::isfinite(r.energy)) throw Numerical_failure("the spline's energy is not finite");
+  if(!std::isfinite(r.energy))
+  {
+    // A finite field whose energy exceeds the largest double: report it, do not fail.
+    r.energy = std::numeric_limits<double>::infinity();
+    r.warnings.push_back("the field's energy exceeds the largest double (the constraint values are huge)");
+  }
   report_ = r;
   reported_ = true;
 }
