@@ -145,6 +145,7 @@ protected:
     Eigen::VectorXd representation; // solver-specific form of the row (may be empty)
     Eigen::VectorXd y;              // pull-back Q^+ r^T
     Eigen::VectorXd harmonic;       // r U_h
+    double scale = 1;               // the row as given is `scale` times `row` (a power of two)
   };
   /// Fills `representation`, `y` and `harmonic` of every row.
   virtual void pull_back(std::vector<Row>& rows) const = 0;

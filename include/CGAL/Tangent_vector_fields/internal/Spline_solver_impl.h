@@ -75,7 +75,15 @@ void Basic_spline_solver<Constraint, Operators>::insert(const std::vector<Constr
   for(std::size_t i = 0; i < constraints.size(); ++i)
     for(Constraint_row& r : constraint_rows(*operators_, constraints[i]))
     {
+      // Each row divided by a power of two near its largest entry (exact): divergence
+      // and curl rows carry 1/size, which on a tiny mesh would overflow in the products
+      // of the small system next to vector rows of size 1.
       Row row;
+      double largest = 0;
+      for(const auto& e : r.entries) largest = std::max(largest, std::abs(e.second));
+      row.scale = largest > 0 && std::isfinite(largest) ? std::ldexp(1., std::ilogb(largest)) : 1.;
+      for(auto& e : r.entries) e.second /= row.scale;
+      r.value /= row.scale;
       row.row = std::move(r);
       rows.push_back(std::move(row));
       owner.push_back(static_cast<int>(i));
@@ -102,7 +110,9 @@ void Basic_spline_solver<Constraint, Operators>::insert(const std::vector<Constr
         const Eigen::VectorXd alpha = system_->solve_K(k);
         for(int i = 0; i < n; ++i) implied += alpha[i] * (rows_[i].row.value - offset(rows_[i]));
       }
-      const double residual = std::abs(rows[j].row.value - implied);
+      implied *= rows[j].scale; // as given
+      const double asked = rows[j].row.value * rows[j].scale;
+      const double residual = std::abs(asked - implied);
       const std::string hint = dependency_hint();
       // All or nothing: take back the rows of this call.
       if(n > first) system_->remove(first, n - first);
@@ -110,7 +120,7 @@ void Basic_spline_solver<Constraint, Operators>::insert(const std::vector<Constr
       std::ostringstream s;
       s << "constraint \"" << constraints[owner[j]].describe() << "\" depends on the constraints already set (sin^2 "
         << independence << " < tolerance " << options_.dependency_tolerance << "); they imply the value " << implied
-        << " where " << rows[j].row.value << " is asked: residual " << residual;
+        << " where " << asked << " is asked: residual " << residual;
       if(kappa == 0) s << " (the row is zero on every field the solver can represent)";
       if(!hint.empty()) s << "; " << hint;
       throw Infeasible_constraints(s.str(), independence, residual);
@@ -139,7 +149,11 @@ void Basic_spline_solver<Constraint, Operators>::change(Constraint_id id, const 
   {
     // Only the values change: no new rows (the fast path of interactive edits).
     const std::vector<double> values = constraint_values(*operators_, constraint);
-    for(int k = 0; k < entry.row_count; ++k) rows_[entry.first_row + k].row.value = values[k];
+    for(int k = 0; k < entry.row_count; ++k)
+    {
+      Row& row = rows_[entry.first_row + k];
+      row.row.value = values[k] / row.scale;
+    }
     entry.constraint = constraint;
     solved_ = false;
     return;
@@ -290,9 +304,10 @@ void Basic_spline_solver<Constraint, Operators>::make_report() const
   double largest = 0, residual = 0;
   for(int i = 0; i < n; ++i)
   {
-    const double c = rows_[i].row.value;
+    // The rows as given (unscaled).
+    const double c = rows_[i].row.value * rows_[i].scale;
     largest = std::max(largest, std::abs(c));
-    residual = std::max(residual, std::abs(apply(rows_[i], solution_) - c));
+    residual = std::max(residual, std::abs(apply(rows_[i], solution_) - rows_[i].row.value) * rows_[i].scale);
   }
   r.constraint_residual = largest > 0 ? residual / largest : residual;
   // For the mesh as given; a quadratic energy (no linear term, no offset) from the
