@@ -85,13 +85,21 @@ Constraint_row curl_row(const Operator_matrices& ops, int e)
 std::array<double, 2> projected_vector(const Intrinsic_mesh& mesh, const Field_constraint& c)
 {
   check_index(c.face, mesh.number_of_faces(), "face", c);
-  const std::array<double, 2> a = mesh.to_frame(c.face, c.vector);
-  const double length = std::sqrt(c.vector[0] * c.vector[0] + c.vector[1] * c.vector[1] + c.vector[2] * c.vector[2]);
+  // Divided by its largest coordinate first: the squares (and even the sum) of a finite
+  // vector near the largest double may overflow, its direction does not.
+  const double largest = std::max({std::abs(c.vector[0]), std::abs(c.vector[1]), std::abs(c.vector[2])});
+  if(largest == 0) return {0., 0.};
+  const std::array<double, 3> direction = {c.vector[0] / largest, c.vector[1] / largest, c.vector[2] / largest};
+  const std::array<double, 2> a = mesh.to_frame(c.face, direction);
+  const double length = std::hypot(direction[0], direction[1], direction[2]);
   // A vector nearly normal to its face has a meaningless direction after projection.
-  if(length > 0 && std::hypot(a[0], a[1]) <= 1e-8 * length)
+  if(std::hypot(a[0], a[1]) <= 1e-8 * length)
     throw Invalid_input("the vector is normal to its face (nothing is left after projecting it onto the face): " +
                         c.describe());
-  return a;
+  const std::array<double, 2> projected = {a[0] * largest, a[1] * largest};
+  if(!std::isfinite(projected[0]) || !std::isfinite(projected[1]))
+    throw Invalid_input("the vector's projection onto its face is not finite in double precision: " + c.describe());
+  return projected;
 }
 
 } // namespace

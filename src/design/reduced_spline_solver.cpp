@@ -33,7 +33,8 @@ void Reduced_spline_solver::update_energy()
   inverse_energy_.resize(d_);
   for(int k = 0; k < d_; ++k)
   {
-    const double lambda = basis_->eigenvalue(k);
+    // In the length unit (see Spline_solver.h): eigenvalues times u^2.
+    const double lambda = basis_->eigenvalue(k) * length_unit_ * length_unit_;
     energy_[k] = basis_->type(k) == Eigenfield_type::harmonic ? 0 : lambda * lambda + omega_ * lambda;
     inverse_energy_[k] = energy_[k] > 0 ? 1 / energy_[k] : 0;
   }
@@ -43,7 +44,8 @@ void Reduced_spline_solver::pull_back(std::vector<Row>& rows) const
 {
   for(Row& row : rows)
   {
-    row.representation = basis_row(row.row);
+    // The row on the basis orthonormal for MX / u^2: u times the given basis.
+    row.representation = basis_row(row.row) * length_unit_;
     row.y = row.representation.cwiseProduct(inverse_energy_);
     const std::vector<int>& harmonic = rows_in_basis_.harmonic_positions();
     row.harmonic.resize(harmonic.size());

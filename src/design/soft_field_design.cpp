@@ -77,6 +77,13 @@ Eigen::MatrixXd projected_block_cg(const std::function<Eigen::MatrixXd(const Eig
   return X;
 }
 
+// A power of two near the largest |x_i| (1 for zero or non-finite x): dividing by it is exact.
+static double value_scale(const Eigen::VectorXd& x)
+{
+  const double largest = x.size() > 0 ? x.cwiseAbs().maxCoeff() : 0.;
+  return largest > 0 && std::isfinite(largest) ? std::ldexp(1., std::ilogb(largest)) : 1.;
+}
+
 } // namespace internal
 
 namespace {
@@ -261,7 +268,8 @@ const Eigen::VectorXd& Reduced_soft_design::coefficients() const
     Eigen::VectorXd rhs = Eigen::VectorXd::Zero(d_);
     for(const auto& e : entries_)
       for(const Weighted_row& r : e.second.rows) rhs += (r.weight * r.row.value) * r.in_basis;
-    coefficients_ = factor_.solve(rhs);
+    const double scale = internal::value_scale(rhs);
+    coefficients_ = factor_.solve(rhs / scale) * scale;
     solved_ = true;
   }
   return coefficients_;
@@ -271,8 +279,9 @@ Eigen::VectorXd Reduced_soft_design::field() const { return basis_->field(coeffi
 
 double Reduced_soft_design::energy() const
 {
-  const Eigen::VectorXd& a = coefficients();
-  return a.cwiseProduct(a).dot(diagonal_);
+  const double scale = internal::value_scale(coefficients());
+  const Eigen::VectorXd a = coefficients() / scale;
+  return a.cwiseProduct(a).dot(diagonal_) * scale * scale;
 }
 
 // ---------------------------------------------------------------- full
@@ -353,9 +362,13 @@ void Full_soft_design::solve() const
   auto apply = [&](const Eigen::MatrixXd& X) -> Eigen::MatrixXd { return system_ * X; };
   auto precondition = [&](const Eigen::MatrixXd& R) -> Eigen::MatrixXd { return solver_->solve(R); };
   int iterations = 0;
-  x_ = internal::projected_block_cg(apply, precondition, project_primal, project_dual, rhs, 1e-12, 200, iterations,
-                                    residual_)
-           .col(0);
+  // Linear in the values: CG on the right-hand side scaled to near 1 (its squared
+  // norms would overflow for values near the largest double), the result scaled back.
+  const double scale = internal::value_scale(rhs.col(0));
+  x_ = internal::projected_block_cg(apply, precondition, project_primal, project_dual, rhs / scale, 1e-12, 200,
+                                    iterations, residual_)
+           .col(0) *
+       scale;
   solved_ = true;
   solve_seconds_ = seconds_since(start);
 }
@@ -368,8 +381,9 @@ Eigen::VectorXd Full_soft_design::field() const
 
 double Full_soft_design::energy() const
 {
-  const Eigen::VectorXd x = field();
-  return x.dot(energy_matrix_ * x);
+  const double scale = internal::value_scale(field());
+  const Eigen::VectorXd x = field() / scale;
+  return x.dot(energy_matrix_ * x) * scale * scale;
 }
 
 } // namespace Tangent_vector_fields

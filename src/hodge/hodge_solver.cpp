@@ -66,11 +66,13 @@ void remove_group_means(Eigen::MatrixXd& X, const std::vector<int>& group, int n
 {
   Eigen::MatrixXd sums = Eigen::MatrixXd::Zero(number_of_groups, X.cols());
   Eigen::VectorXd weights = Eigen::VectorXd::Zero(number_of_groups);
+  // Relative masses: area times value would overflow on a huge mesh (~size^3).
+  const double unit = mass.size() > 0 && mass.maxCoeff() > 0 ? mass.maxCoeff() : 1.;
   for(std::size_t i = 0; i < group.size(); ++i)
     if(group[i] >= 0)
     {
-      sums.row(group[i]) += mass[i] * X.row(i);
-      weights[group[i]] += mass[i];
+      sums.row(group[i]) += (mass[i] / unit) * X.row(i);
+      weights[group[i]] += mass[i] / unit;
     }
   for(std::size_t i = 0; i < group.size(); ++i)
     if(group[i] >= 0 && weights[group[i]] > 0) X.row(i) -= sums.row(group[i]) / weights[group[i]];
@@ -171,9 +173,21 @@ Eigen::MatrixXd Hodge_solver::solve_edge_laplacian(const Eigen::MatrixXd& b) con
   return g;
 }
 
+// The right-hand sides G^T MX v are formed with the areas in units of the mesh's
+// length unit (a power of two: exact), so that areas times values (~size^2) cannot
+// overflow before G^T brings them back to ~size.
+namespace {
+Eigen::VectorXd unit_field_masses(const Operator_matrices& ops)
+{
+  const double u = ops.mesh().length_unit();
+  return ops.field_masses() / u / u;
+}
+} // namespace
+
 Eigen::MatrixXd Hodge_solver::potentials(const Eigen::MatrixXd& fields) const
 {
-  return solve_vertex_laplacian(ops_->G().transpose() * (ops_->field_masses().asDiagonal() * fields));
+  const double u = ops_->mesh().length_unit();
+  return solve_vertex_laplacian((ops_->G().transpose() * (unit_field_masses(*ops_).asDiagonal() * fields)) * u * u);
 }
 
 Eigen::MatrixXd Hodge_solver::copotentials(const Eigen::MatrixXd& fields) const
@@ -182,8 +196,9 @@ Eigen::MatrixXd Hodge_solver::copotentials(const Eigen::MatrixXd& fields) const
   // rhs = -G*^T J MX v, one column per field.
   Eigen::MatrixXd rotated(fields.rows(), fields.cols());
   for(Eigen::Index j = 0; j < fields.cols(); ++j)
-    rotated.col(j) = ops_->rotate(ops_->field_masses().cwiseProduct(fields.col(j)));
-  const Eigen::MatrixXd g = solve_edge_laplacian(-(ops_->G_star_interior().transpose() * rotated));
+    rotated.col(j) = ops_->rotate(unit_field_masses(*ops_).cwiseProduct(fields.col(j)));
+  const double u = mesh.length_unit();
+  const Eigen::MatrixXd g = solve_edge_laplacian(-(ops_->G_star_interior().transpose() * rotated) * u * u);
   Eigen::MatrixXd all = Eigen::MatrixXd::Zero(mesh.number_of_edges(), fields.cols());
   for(int i = 0; i < mesh.number_of_interior_edges(); ++i) all.row(mesh.interior_edges()[i]) = g.row(i);
   return all;
@@ -209,6 +224,15 @@ Hodge_parts Hodge_solver::decompose(const Eigen::VectorXd& field, unsigned outpu
   {
     g = copotentials(field);
     coexact = ops_->rotate(ops_->G_star() * g);
+  }
+  // Finite input, finite operators: a non-finite part means an overflow (a field near
+  // the largest double); say so instead of handing back NaNs.
+  if(!f.allFinite() || !g.allFinite() || !exact.allFinite() || !coexact.allFinite())
+  {
+    std::ostringstream msg;
+    msg << "the Hodge decomposition overflowed (non-finite potentials): the field's coordinates, up to "
+        << field.cwiseAbs().maxCoeff() << ", are too large for double precision";
+    throw Numerical_failure(msg.str());
   }
   if(outputs & hodge_harmonic) parts.harmonic = field - exact - coexact;
   if(outputs & hodge_exact) parts.exact = std::move(exact);
@@ -249,7 +273,9 @@ const Eigen::MatrixXd& Hodge_solver::harmonic_basis(std::uint64_t seed) const
   // Gram matrix would square them and hide everything below 1e-8).  The projections
   // span the harmonic space, so `dim` singular values are O(1) relative to the largest
   // and two are at the level of the solver's roundoff; the cut 1e-6 lies far from both.
-  const Eigen::VectorXd sqrt_mass = ops_->field_masses().cwiseSqrt();
+  // In the length unit (exact): the singular values stay near 1 at any scale.
+  const double u = ops_->mesh().length_unit();
+  const Eigen::VectorXd sqrt_mass = unit_field_masses(*ops_).cwiseSqrt();
   const Eigen::MatrixXd Y = sqrt_mass.asDiagonal() * H;
   Eigen::HouseholderQR<Eigen::MatrixXd> qr(Y);
   const Eigen::MatrixXd R_factor = qr.matrixQR().topRows(m).triangularView<Eigen::Upper>();
@@ -272,9 +298,9 @@ const Eigen::MatrixXd& Hodge_solver::harmonic_basis(std::uint64_t seed) const
   Eigen::MatrixXd basis = H * svd.matrixV().leftCols(dim);
   for(int j = 0; j < dim; ++j) basis.col(j) /= singular[j];
   // A second pass (Cholesky of the new Gram matrix) brings orthonormality to roundoff.
-  const Eigen::MatrixXd K2 = basis.transpose() * ops_->field_masses().asDiagonal() * basis;
+  const Eigen::MatrixXd K2 = basis.transpose() * unit_field_masses(*ops_).asDiagonal() * basis;
   Eigen::LLT<Eigen::MatrixXd> llt(K2);
-  basis = llt.matrixU().solve<Eigen::OnTheRight>(basis);
+  basis = llt.matrixU().solve<Eigen::OnTheRight>(basis) / u; // orthonormal in MX, not MX / u^2
   impl_->harmonic_basis = std::move(basis);
   return *impl_->harmonic_basis;
 }

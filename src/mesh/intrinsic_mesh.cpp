@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <sstream>
 #include <utility>
@@ -26,6 +27,15 @@ Vector cross(const Vector& a, const Vector& b)
 double dot(const Vector& a, const Vector& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 double norm(const Vector& a) { return std::sqrt(dot(a, a)); }
 Vector scaled(const Vector& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
+double largest_magnitude(const Vector& a) { return std::max({std::abs(a[0]), std::abs(a[1]), std::abs(a[2])}); }
+// Length of `a` without squaring its coordinates: squares underflow below ~1e-154 and
+// overflow above ~1e154, lengths of edges anywhere in the double range do not.
+double safe_norm(const Vector& a)
+{
+  const double m = largest_magnitude(a);
+  if(!(m > 0) || !std::isfinite(m)) return m;
+  return m * norm(scaled(a, 1 / m));
+}
 
 // Union-find with path halving.
 struct Disjoint_sets
@@ -40,7 +50,8 @@ struct Disjoint_sets
   void unite(int a, int b) { parent[find(a)] = find(b); }
 };
 
-// Area from side lengths, Kahan's stable form of Heron's formula.
+// Area from side lengths, Kahan's stable form of Heron's formula.  Its product has the
+// fourth power of the lengths: call it with lengths relative to the longest (<= 1).
 double triangle_area(double a, double b, double c)
 {
   if(a < b) std::swap(a, b);
@@ -289,10 +300,15 @@ void Intrinsic_mesh::compute_lengths(const Intrinsic_mesh_options& options)
   double sum = 0;
   for(int e = 0; e < ne; ++e)
   {
-    edge_lengths_[e] = norm(sub(positions_[edge_vertices_[e][1]], positions_[edge_vertices_[e][0]]));
-    sum += edge_lengths_[e];
+    edge_lengths_[e] = safe_norm(sub(positions_[edge_vertices_[e][1]], positions_[edge_vertices_[e][0]]));
+    if(!std::isfinite(edge_lengths_[e]))
+      fail(Mesh_defect::non_finite_coordinate,
+           "edge " + std::to_string(e) + " (vertices " + std::to_string(edge_vertices_[e][0]) + ", " +
+               std::to_string(edge_vertices_[e][1]) + ") is longer than the largest double: the coordinates are too large");
+    sum += edge_lengths_[e] / ne; // divided first: the sum of large lengths must not overflow
   }
-  mean_edge_length_ = sum / ne;
+  mean_edge_length_ = sum;
+  length_unit_ = sum > 0 ? std::ldexp(1., std::ilogb(sum)) : 1.;
 
   auto margin = [&](int f) {
     const double a = face_edge_length(f, 0), b = face_edge_length(f, 1), c = face_edge_length(f, 2);
@@ -321,8 +337,18 @@ void Intrinsic_mesh::compute_lengths(const Intrinsic_mesh_options& options)
       std::ostringstream msg;
       msg << "face " << f << " (vertices " << face_vertices_[f][0] << ", " << face_vertices_[f][1] << ", "
           << face_vertices_[f][2] << ") is degenerate: edge lengths " << face_edge_length(f, 0) << ", "
-          << face_edge_length(f, 1) << ", " << face_edge_length(f, 2)
-          << "; use the named parameter use_intrinsic_mollification(true) to process it";
+          << face_edge_length(f, 1) << ", " << face_edge_length(f, 2);
+      // Doubles resolve a coordinate of size X to about X * 1.1e-16: a face that small
+      // next to its distance from the origin has lost its shape in the rounding of its
+      // coordinates, which no mollification restores.
+      double coordinate = 0;
+      for(int v : face_vertices_[f]) coordinate = std::max(coordinate, largest_magnitude(positions_[v]));
+      const double resolution = coordinate * std::numeric_limits<double>::epsilon();
+      if(!(longest > resolution / options.degeneracy_tolerance))
+        msg << ", at coordinates up to " << coordinate << ", which doubles resolve only to about " << resolution
+            << ": the mesh is too small for its distance from the origin (translate it towards the origin)";
+      else
+        msg << "; use the named parameter use_intrinsic_mollification(true) to process it";
       fail(Mesh_defect::degenerate_face, msg.str());
     }
   }
@@ -332,6 +358,7 @@ void Intrinsic_mesh::compute_layout_and_frames()
 {
   const int nf = number_of_faces();
   face_areas_.resize(nf);
+  shape_areas_.resize(nf);
   corner2_.resize(nf);
   frames_.resize(nf);
   for(int f = 0; f < nf; ++f)
@@ -349,15 +376,39 @@ void Intrinsic_mesh::compute_layout_and_frames()
       face_edges_[f][k] = e[(k + shift) % 3];
     }
 
-    const double l0 = face_edge_length(f, 0), l1 = face_edge_length(f, 1), l2 = face_edge_length(f, 2);
-    const double area = triangle_area(l0, l1, l2);
-    face_areas_[f] = area;
-    corner2_[f] = {(l2 * l2 + l1 * l1 - l0 * l0) / (2 * l2), 2 * area / l2};
+    // Everything in units of the longest edge l2, so that no product of lengths under-
+    // or overflows; areas and layouts are scaled back at the end.
+    const double l2 = face_edge_length(f, 2);
+    const double r0 = face_edge_length(f, 0) / l2, r1 = face_edge_length(f, 1) / l2;
+    const double shape_area = triangle_area(r0, r1, 1.);
+    shape_areas_[f] = shape_area;
+    face_areas_[f] = shape_area * l2 * l2;
+    corner2_[f] = {0.5 * (1 + r1 * r1 - r0 * r0) * l2, 2 * shape_area * l2};
+    // Areas weigh every integral and their inverses every divergence: below the
+    // smallest normal double they lose their digits (or vanish), above the largest
+    // they are infinite.
+    if(!(face_areas_[f] >= std::numeric_limits<double>::min()) ||
+       !(face_areas_[f] <= std::numeric_limits<double>::max()))
+    {
+      std::ostringstream msg;
+      msg << "face " << f << " has edges of length " << l2 << " and area " << face_areas_[f]
+          << ", outside the range of double precision (" << std::numeric_limits<double>::min() << " to "
+          << std::numeric_limits<double>::max()
+          << "): the mesh is too " << (l2 < 1 ? "small" : "large") << "; scale it towards unit size";
+      fail(Mesh_defect::unrepresentable_size, msg.str());
+    }
 
-    // 3D frame: e1 along corner 0 -> corner 1, e2 = n x e1.
+    // 3D frame: e1 along corner 0 -> corner 1, e2 = n x e1 (from the differences of the
+    // positions divided by their largest coordinate, for the same reason).
     const Point& p0 = positions_[face_vertices_[f][0]];
-    const Vector d1 = sub(positions_[face_vertices_[f][1]], p0);
-    const Vector d2 = sub(positions_[face_vertices_[f][2]], p0);
+    Vector d1 = sub(positions_[face_vertices_[f][1]], p0);
+    Vector d2 = sub(positions_[face_vertices_[f][2]], p0);
+    const double unit = std::max(largest_magnitude(d1), largest_magnitude(d2));
+    if(unit > 0)
+    {
+      d1 = scaled(d1, 1 / unit);
+      d2 = scaled(d2, 1 / unit);
+    }
     Vector n = cross(d1, d2);
     double nn = norm(n);
     if(!(nn > 1e-14 * dot(d1, d1)))
@@ -370,7 +421,9 @@ void Intrinsic_mesh::compute_layout_and_frames()
           if(g >= 0 && g != f)
           {
             const auto& t = face_vertices_[g];
-            n = add(n, cross(sub(positions_[t[1]], positions_[t[0]]), sub(positions_[t[2]], positions_[t[0]])));
+            Vector a = sub(positions_[t[1]], positions_[t[0]]), b = sub(positions_[t[2]], positions_[t[0]]);
+            const double m = std::max(largest_magnitude(a), largest_magnitude(b));
+            if(m > 0) n = add(n, cross(scaled(a, 1 / m), scaled(b, 1 / m)));
           }
       nn = norm(n);
       if(!(nn > 0)) { n = {0, 0, 1}; nn = 1; }
@@ -391,9 +444,11 @@ void Intrinsic_mesh::compute_layout_and_frames()
 
 double Intrinsic_mesh::cotangent(int f, int k) const
 {
-  const double a = face_edge_length(f, k), b = face_edge_length(f, (k + 1) % 3),
-               c = face_edge_length(f, (k + 2) % 3);
-  return (b * b + c * c - a * a) / (4 * face_areas_[f]);
+  // In units of the longest edge (local edge 2), like the shape area.
+  const double l2 = face_edge_length(f, 2);
+  const double a = face_edge_length(f, k) / l2, b = face_edge_length(f, (k + 1) % 3) / l2,
+               c = face_edge_length(f, (k + 2) % 3) / l2;
+  return (b * b + c * c - a * a) / (4 * shape_areas_[f]);
 }
 
 std::array<double, 2> Intrinsic_mesh::to_frame(int f, const Vector& w) const

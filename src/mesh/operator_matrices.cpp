@@ -160,12 +160,14 @@ const Vector& Operator_matrices::field_masses() const
 namespace {
 // Gradients of the three hat functions of face f in its frame, from the layout
 // p0 = (0,0), p1 = (l2,0), p2 = (x,y): grad phi_k = J (p_{k+2} - p_{k+1}) / (2A).
+// Computed for the face scaled to a longest edge l2 = 1 (shape area A / l2^2), then
+// divided by l2: no product of two lengths, which under- or overflows at extreme scales.
 std::array<std::array<double, 2>, 3> hat_gradients(const Intrinsic_mesh& mesh, int f)
 {
   const double l2 = mesh.face_edge_length(f, 2);
-  const double x = mesh.corner2_layout(f)[0], y = mesh.corner2_layout(f)[1];
-  const double s = 1 / (2 * mesh.face_area(f));
-  return {{{-y * s, (x - l2) * s}, {y * s, -x * s}, {0., l2 * s}}};
+  const double x = mesh.corner2_layout(f)[0] / l2, y = mesh.corner2_layout(f)[1] / l2;
+  const double s = 1 / (2 * mesh.face_shape_area(f) * l2);
+  return {{{-y * s, (x - 1) * s}, {y * s, -x * s}, {0., s}}};
 }
 
 // 2nf x n matrix with 3 entries per row: rows 2f, 2f+1 hold `scale` times the hat

@@ -28,15 +28,21 @@ std::complex<double> face_power(const N_field_operators& ops, const N_field_cons
   if(c.face < 0 || c.face >= mesh.number_of_faces()) refuse(c, ops.n(), "no such face");
   for(double x : c.vector)
     if(!std::isfinite(x)) refuse(c, ops.n(), "the vector is not finite");
-  const double length = std::sqrt(c.vector[0] * c.vector[0] + c.vector[1] * c.vector[1] + c.vector[2] * c.vector[2]);
-  if(length == 0 && c.kind == N_field_constraint_kind::vector) return {0, 0};
-  if(length == 0) refuse(c, ops.n(), "the direction is zero");
-  // Scale first: a huge but finite vector must not overflow in the projection.
-  const std::array<double, 3> unit_vector = {c.vector[0] / length, c.vector[1] / length, c.vector[2] / length};
+  // Divided by its largest coordinate first: the squares (and even the length) of a
+  // finite vector near the largest double may overflow, its direction does not.
+  const double largest = std::max({std::abs(c.vector[0]), std::abs(c.vector[1]), std::abs(c.vector[2])});
+  if(largest == 0 && c.kind == N_field_constraint_kind::vector) return {0, 0};
+  if(largest == 0) refuse(c, ops.n(), "the direction is zero");
+  const double relative = std::hypot(c.vector[0] / largest, c.vector[1] / largest, c.vector[2] / largest);
+  const double length = largest * relative;
+  const std::array<double, 3> unit_vector = {c.vector[0] / largest / relative, c.vector[1] / largest / relative,
+                                             c.vector[2] / largest / relative};
   const auto ab = mesh.to_frame(c.face, unit_vector);
   const double in_plane = std::hypot(ab[0], ab[1]);
   if(!(in_plane > 1e-12)) refuse(c, ops.n(), "the vector is normal to its face");
-  return std::polar(unit ? 1. : length * in_plane, ops.n() * std::atan2(ab[1], ab[0]));
+  const double magnitude = unit ? 1. : length * in_plane;
+  if(!std::isfinite(magnitude)) refuse(c, ops.n(), "the vector's length is not finite in double precision");
+  return std::polar(magnitude, ops.n() * std::atan2(ab[1], ab[0]));
 }
 
 // The field at the constraint's point as complex weights on face values (in the face's

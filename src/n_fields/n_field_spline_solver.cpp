@@ -33,6 +33,23 @@ int checked_order(int m)
   return m;
 }
 
+// The energies of an order-m spline scale as area^-m: the solver works in the mesh's
+// units, so its size must keep them (and their inverses, the pull-backs) inside the
+// double range, with room for the sums and products of the solve.
+void check_size_for_order(const N_field_operators& ops, int m)
+{
+  const double area = ops.face_areas().sum();
+  const double exponent = std::abs(std::log10(area)) * m;
+  if(!(exponent <= 300))
+  {
+    std::ostringstream s;
+    s << "n-field spline of order " << m << ": the mesh's area " << area << " makes its energies (area^-" << m
+      << ") leave the range of double precision; scale the mesh towards unit size (areas A with A^" << m
+      << " between 1e-300 and 1e300)";
+    throw Invalid_input(s.str());
+  }
+}
+
 // The alignment, checked; active() false when it does not apply.
 const N_field_alignment& checked_alignment(const N_field_alignment& a, Eigen::Index size)
 {
@@ -77,6 +94,7 @@ Reduced_n_field_spline_solver::Reduced_n_field_spline_solver(std::shared_ptr<con
                           reduced_kernel_dimension(basis.get(), basis_size, alignment), options),
     basis_(std::move(basis)), d_(checked_size(*basis_, basis_size)), order_(checked_order(order))
 {
+  check_size_for_order(operators(), order_);
   alignment_weight_ = effective_weight(alignment, operators(), order_);
   if(alignment_weight_ > 0)
   {
@@ -173,6 +191,7 @@ Full_n_field_spline_solver::Full_n_field_spline_solver(std::shared_ptr<const N_f
     order_(checked_order(order)), alignment_(alignment), factors_(std::make_unique<Factors>())
 {
   const N_field_operators& ops = this->operators();
+  check_size_for_order(ops, order_);
   alignment_weight_ = effective_weight(alignment_, ops, order_);
   if(alignment_weight_ > 0)
   {

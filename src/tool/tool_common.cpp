@@ -295,7 +295,13 @@ std::string extension(const std::string& path)
 
 double field_norm(const TVF::Operator_matrices& matrices, const Eigen::VectorXd& x)
 {
-  return std::sqrt(x.dot(matrices.field_masses().cwiseProduct(x)));
+  // Field and areas scaled to near 1 first (by powers of two): area times squared
+  // value would overflow or underflow for huge or tiny meshes and fields.
+  const double largest = x.size() > 0 ? x.cwiseAbs().maxCoeff() : 0.;
+  if(!(largest > 0) || !std::isfinite(largest)) return largest > 0 ? largest : 0.;
+  const double s = std::ldexp(1., std::ilogb(largest)), u = matrices.mesh().length_unit();
+  const Eigen::VectorXd y = x / s;
+  return std::sqrt(y.dot((matrices.field_masses() / u / u).cwiseProduct(y))) * u * s;
 }
 
 std::vector<double> to_std_vector(const Eigen::VectorXd& x) { return std::vector<double>(x.data(), x.data() + x.size()); }

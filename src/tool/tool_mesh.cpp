@@ -18,6 +18,7 @@
 #include <CGAL/Tangent_vector_fields/polygon_soup_to_mesh.h>
 
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <set>
@@ -352,6 +353,14 @@ void Tool_mesh::write_fields(const std::string& path, const std::vector<Named_fi
       if(f.x.size() != 2 * static_cast<Eigen::Index>(mesh.number_of_faces()))
         throw Tool_error("field '" + f.name + "' has " + std::to_string(f.x.size() / 2) + " vectors, the mesh " +
                          std::to_string(mesh.number_of_faces()) + " faces");
+      // The last line of defence: a NaN or an infinity is never written as a result.
+      if(!f.x.allFinite())
+      {
+        Eigen::Index face = 0;
+        while(face < f.x.size() / 2 && std::isfinite(f.x[2 * face]) && std::isfinite(f.x[2 * face + 1])) ++face;
+        throw Tool_error("not writing '" + path + "': the field '" + f.name + "' is not finite (NaN or infinite) at face " +
+                         std::to_string(face) + "; its computation overflowed");
+      }
       maps.push_back(std::make_unique<Temporary_field>(mesh));
       impl_->operators->from_frame_coordinates(f.x, maps.back()->map());
     }

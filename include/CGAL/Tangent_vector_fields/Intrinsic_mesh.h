@@ -81,6 +81,9 @@ public:
   /// Length of local edge `k` (opposite corner `k`) of face `f`.
   double face_edge_length(int f, int k) const { return edge_lengths_[face_edges_[f][k]]; }
   double face_area(int f) const { return face_areas_[f]; }
+  /// Area of face `f` divided by the square of its longest edge: its shape, free of the
+  /// mesh's scale (representable where the area itself under- or overflows).
+  double face_shape_area(int f) const { return shape_areas_[f]; }
   /// Layout of corner 2 of face `f` (corner 0 at the origin, corner 1 at (l_2, 0)).
   const std::array<double, 2>& corner2_layout(int f) const { return corner2_[f]; }
   /// Cotangent of the angle at local corner `k` of face `f`.
@@ -105,6 +108,10 @@ public:
   /// The constant added to all edge lengths by mollification (0 without it).
   double mollification_delta() const { return mollification_delta_; }
   double mean_edge_length() const { return mean_edge_length_; }
+  /// The power of two nearest below the mean edge length.  Dividing lengths by it (and
+  /// areas by its square) is exact and brings them near 1: solvers use it to keep
+  /// products of lengths, areas and their inverses far from under- and overflow.
+  double length_unit() const { return length_unit_; }
   /// Non-fatal findings, e.g. vertices referenced by no face.
   const std::vector<std::string>& warnings() const { return warnings_; }
 
@@ -125,12 +132,14 @@ private:
   std::vector<int> interior_edges_;
   std::vector<double> edge_lengths_;
   std::vector<double> face_areas_;
+  std::vector<double> shape_areas_;
   std::vector<std::array<double, 2>> corner2_;
   std::vector<std::array<Vector, 3>> frames_;
   std::vector<int> vertex_component_;
   Mesh_topology topology_;
   double mollification_delta_ = 0;
   double mean_edge_length_ = 0;
+  double length_unit_ = 1;
   std::vector<std::string> warnings_;
 };
 

@@ -35,7 +35,7 @@ public:
   int basis_size() const { return d_; }
   const Eigenfield_basis& basis() const { return *basis_; }
   /// Coefficients `a` of the spline in the basis (`basis_size()`).
-  const Eigen::VectorXd& coefficients() const { return solution(); }
+  Eigen::VectorXd coefficients() const { return solution() * length_unit_; }
   Eigen::VectorXd field() const override;
 
   /// The row `C~_i U` of a constraint row in this basis.

@@ -23,6 +23,14 @@
 namespace CGAL {
 namespace Tangent_vector_fields {
 
+namespace internal {
+/// The length unit a spline solver measures its mesh in: the mesh's `length_unit()`
+/// for vector fields; 1 (the mesh as given) for other operators.
+inline double spline_length_unit(const Operator_matrices& ops) { return ops.mesh().length_unit(); }
+template <class Operators>
+double spline_length_unit(const Operators&) { return 1.; }
+} // namespace internal
+
 /// Handle of a constraint in a solver; stays valid until the constraint is removed.
 typedef int Constraint_id;
 
@@ -97,6 +105,7 @@ protected:
     Eigen::VectorXd representation; // solver-specific form of the row (may be empty)
     Eigen::VectorXd y;              // pull-back Q^+ r^T
     Eigen::VectorXd harmonic;       // r U_h
+    double scale = 1;               // the row as given is `scale` times `row` (a power of two)
   };
 
 public:
@@ -128,7 +137,7 @@ public:
   /// small system rebuilt (the full solver also refactors its energy).
   void set_omega(double omega);
   /// `omega` for the mesh as given (`options.omega / area`).
-  double effective_omega() const { return omega_; }
+  double effective_omega() const { return omega_ / length_unit_ / length_unit_; }
   const Spline_options& options() const { return options_; }
   const Operators& operators() const { return *operators_; }
 
@@ -209,7 +218,12 @@ protected:
 
   std::shared_ptr<const Operators> operators_;
   Spline_options options_;
-  double omega_ = 0;          // effective omega for the mesh as given
+  // The solver works on the mesh measured in `length_unit_` (a power of two near its
+  // edge length, `internal::spline_length_unit`): lengths, areas and energies stay
+  // near 1 whatever the mesh's size, where E_B alone (~size^-4 per unit area) would
+  // under- or overflow.  `omega_`, the energies and the pull-backs are in that unit.
+  double length_unit_ = 1;
+  double omega_ = 0;          // effective omega for the mesh measured in length_unit_
   double harmonic_scale_ = 0; // energy of a unit field of frequency 1/area
   double harmonic_penalty_ = 0; // energy per unit harmonic coefficient (from options.harmonic_eigenvalue)
 

@@ -24,7 +24,9 @@ enum class Mesh_defect {
   garbage,                  ///< removed elements still stored (call `collect_garbage()`)
   invalid_index,            ///< an element index outside `[0, n)` or repeated
   non_finite_coordinate,    ///< a NaN or infinite vertex coordinate
-  degenerate_face           ///< a face of (nearly) zero area; see `use_intrinsic_mollification`
+  degenerate_face,          ///< a face of (nearly) zero area; see `use_intrinsic_mollification`
+  unrepresentable_size      ///< a face whose area is too small or too large for a normal double (edges
+                            ///< outside about 1e-150 to 1e150): scale the mesh
 };
 
 /// Thrown when a mesh cannot be processed; `defect()` says why and the message names the element.

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace CGAL {
@@ -38,8 +39,10 @@ template <class Constraint, class Operators>
 void Basic_spline_solver<Constraint, Operators>::set_scales()
 {
   // The energy is E_B + omega E_D with omega given on the unit-area mesh: lambda
-  // scales as 1/area, so omega as 1/area too.
-  const double area = operators_->face_areas().sum();
+  // scales as 1/area, so omega as 1/area too.  Areas in the solver's length unit
+  // (see `length_unit_`).
+  length_unit_ = internal::spline_length_unit(*operators_);
+  const double area = operators_->face_areas().sum() / length_unit_ / length_unit_;
   omega_ = options_.omega / area;
   const double lambda = 1 / area;
   harmonic_scale_ = lambda * lambda + omega_ * lambda;
@@ -74,7 +77,15 @@ Basic_spline_solver<Constraint, Operators>::prepare(const std::vector<Constraint
   for(std::size_t i = 0; i < constraints.size(); ++i)
     for(Constraint_row& r : constraint_rows(*operators_, constraints[i]))
     {
+      // Each row divided by a power of two near its largest entry (exact): divergence
+      // and curl rows carry 1/size, which on a tiny mesh would overflow in the products
+      // of the small system next to vector rows of size 1.
       Row row;
+      double largest = 0;
+      for(const auto& e : r.entries) largest = std::max(largest, std::abs(e.second));
+      row.scale = largest > 0 && std::isfinite(largest) ? std::ldexp(1., std::ilogb(largest)) : 1.;
+      for(auto& e : r.entries) e.second /= row.scale;
+      r.value /= row.scale;
       row.row = std::move(r);
       prepared.rows.push_back(std::move(row));
       prepared.owner.push_back(static_cast<int>(i));
@@ -117,7 +128,7 @@ std::vector<Constraint_id> Basic_spline_solver<Constraint, Operators>::add_prepa
     for(std::size_t j = 0; j < prepared.rows.size(); ++j)
     {
       const int i = prepared.owner[j];
-      prepared.rows[j].row.value = row_values[i][next[i]++];
+      prepared.rows[j].row.value = row_values[i][next[i]++] / prepared.rows[j].scale;
     }
   }
   std::vector<Constraint_id> ids;
@@ -161,7 +172,9 @@ void Basic_spline_solver<Constraint, Operators>::append(Prepared& prepared, cons
         const Eigen::VectorXd alpha = system_->solve_K(k);
         for(int i = 0; i < n; ++i) implied += alpha[i] * (rows_[i].row.value - offset(rows_[i]));
       }
-      const double residual = std::abs(rows[j].row.value - implied);
+      implied *= rows[j].scale; // as given
+      const double asked = rows[j].row.value * rows[j].scale;
+      const double residual = std::abs(asked - implied);
       const std::string hint = dependency_hint();
       // All or nothing: take back the rows of this call.
       if(n > first) system_->remove(first, n - first);
@@ -169,7 +182,7 @@ void Basic_spline_solver<Constraint, Operators>::append(Prepared& prepared, cons
       std::ostringstream s;
       s << "constraint \"" << constraints[owner[j]].describe() << "\" depends on the constraints already set (sin^2 "
         << independence << " < tolerance " << options_.dependency_tolerance << "); they imply the value " << implied
-        << " where " << rows[j].row.value << " is asked: residual " << residual;
+        << " where " << asked << " is asked: residual " << residual;
       if(kappa == 0) s << " (the row is zero on every field the solver can represent)";
       if(!hint.empty()) s << "; " << hint;
       throw Infeasible_constraints(s.str(), independence, residual);
@@ -199,7 +212,11 @@ void Basic_spline_solver<Constraint, Operators>::change(Constraint_id id, const 
   {
     // Only the values change: no new rows (the fast path of interactive edits).
     const std::vector<double> values = constraint_values(*operators_, constraint);
-    for(int k = 0; k < entry.row_count; ++k) rows_[entry.first_row + k].row.value = values[k];
+    for(int k = 0; k < entry.row_count; ++k)
+    {
+      Row& row = rows_[entry.first_row + k];
+      row.row.value = values[k] / row.scale;
+    }
     entry.constraint = constraint;
     if(id != edit_cache_.id) ++version_; // the cached field was made with the old values
     solved_ = false;
@@ -317,7 +334,11 @@ Eigen::VectorXd Basic_spline_solver<Constraint, Operators>::values(Constraint_id
   auto it = entries_.find(id);
   if(it == entries_.end()) throw Invalid_input("no constraint with id " + std::to_string(id));
   Eigen::VectorXd c(it->second.row_count);
-  for(int k = 0; k < c.size(); ++k) c[k] = rows_[it->second.first_row + k].row.value;
+  for(int k = 0; k < c.size(); ++k)
+  {
+    const Row& row = rows_[it->second.first_row + k];
+    c[k] = row.row.value * row.scale; // as given
+  }
   return c;
 }
 
@@ -338,7 +359,7 @@ Eigen::MatrixXd Basic_spline_solver<Constraint, Operators>::value_response(Const
     Eigen::VectorXd x = Eigen::VectorXd::Zero(space_dimension());
     for(int i = 0; i < n; ++i) x += mu[i] * rows_[i].y;
     if(z.size() > 0) add_harmonic(z, x);
-    response.col(k) = x;
+    response.col(k) = x / rows_[it->second.first_row + k].scale; // per unit of the value as given
   }
   return response;
 }
@@ -375,12 +396,24 @@ void Basic_spline_solver<Constraint, Operators>::solve() const
   const Eigen::VectorXd& x0 = unconstrained_minimiser();
   Eigen::VectorXd c(n);
   for(int i = 0; i < n; ++i) c[i] = rows_[i].row.value - (x0.size() > 0 ? apply(rows_[i], x0) : 0.);
+  // The spline is linear in the values: solved for values scaled to at most 1 (by a
+  // power of two, exact) and scaled back, so that values near the largest double
+  // overflow only if the field itself does.
+  const double largest = c.size() > 0 ? c.cwiseAbs().maxCoeff() : 0.;
+  const double scale = largest > 0 && std::isfinite(largest) ? std::ldexp(1., std::ilogb(largest) + 1) : 1.;
   Eigen::VectorXd mu, z;
-  system_->solve(c, mu, z);
-  solution_ = x0.size() > 0 ? x0 : Eigen::VectorXd::Zero(space_dimension());
-  for(int i = 0; i < n; ++i) solution_ += mu[i] * rows_[i].y;
-  if(z.size() > 0) add_harmonic(z, solution_);
-  if(!solution_.allFinite()) throw Numerical_failure("the spline solve produced non-finite values");
+  system_->solve(c / scale, mu, z);
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(space_dimension());
+  for(int i = 0; i < n; ++i) x += mu[i] * rows_[i].y;
+  if(z.size() > 0) add_harmonic(z, x);
+  solution_ = x * scale;
+  if(x0.size() > 0) solution_ += x0;
+  if(!solution_.allFinite())
+  {
+    std::ostringstream s;
+    s << "the spline is not finite in double precision: its constraint values reach " << largest;
+    throw Numerical_failure(s.str());
+  }
   solved_ = true;
   reported_ = false;
 }
@@ -399,12 +432,20 @@ void Basic_spline_solver<Constraint, Operators>::make_report() const
   double largest = 0, residual = 0;
   for(int i = 0; i < n; ++i)
   {
-    const double c = rows_[i].row.value;
+    // The rows as given (unscaled).
+    const double c = rows_[i].row.value * rows_[i].scale;
     largest = std::max(largest, std::abs(c));
-    residual = std::max(residual, std::abs(apply(rows_[i], solution_) - c));
+    residual = std::max(residual, std::abs(apply(rows_[i], solution_) - rows_[i].row.value) * rows_[i].scale);
   }
   r.constraint_residual = largest > 0 ? residual / largest : residual;
-  r.energy = energy(solution_);
+  // For the mesh as given; a quadratic energy (no linear term, no offset) from the
+  // solution scaled to near 1, so that its squares cannot overflow.
+  {
+    const double largest = solution_.size() > 0 ? solution_.cwiseAbs().maxCoeff() : 0.;
+    const bool quadratic = unconstrained_minimiser().size() == 0;
+    const double scale = quadratic && largest > 0 ? std::ldexp(1., std::ilogb(largest)) : 1.;
+    r.energy = energy(solution_ / scale) / length_unit_ / length_unit_ * scale * scale;
+  }
   if(n > 0 && r.smallest_independence < options_.warning_tolerance)
   {
     std::ostringstream s;
@@ -422,7 +463,12 @@ void Basic_spline_solver<Constraint, Operators>::make_report() const
       << " of the energy scale): it may be large";
     r.warnings.push_back(s.str());
   }
-  if(!std::isfinite(r.energy)) throw Numerical_failure("the spline's energy is not finite");
+  if(!std::isfinite(r.energy))
+  {
+    // A finite field whose energy exceeds the largest double: report it, do not fail.
+    r.energy = std::numeric_limits<double>::infinity();
+    r.warnings.push_back("the field's energy exceeds the largest double (the constraint values are huge)");
+  }
   report_ = r;
   reported_ = true;
 }
