@@ -79,7 +79,7 @@ Eigen::VectorXd Reduced_spline_solver::field() const
 Eigen::MatrixXd Reduced_spline_solver::fields_of(const Eigen::MatrixXd& a) const
 {
   Compressed_fields c;
-  c.coefficients = a;
+  c.coefficients = a * length_unit_; // as coefficients() does
   return basis_->decompress(c);
 }
 

@@ -37,6 +37,20 @@ inline TVF::Spline_options spline_options(double omega)
   return options;
 }
 
+// The page receives fields as float32: a constraint beyond 1e30 would give a field it
+// cannot show (the library takes values up to the largest double).
+inline void check_displayable(double magnitude, const std::string& what)
+{
+  if(magnitude > 1e30)
+    throw Message_error(what + " of " + short_number(magnitude) +
+                        " is beyond what the page shows (float32 fields: 1e30 at most); scale the values down");
+}
+
+inline double largest_coordinate(const std::array<double, 3>& v)
+{
+  return std::max({std::abs(v[0]), std::abs(v[1]), std::abs(v[2])});
+}
+
 // A constraint file as the designs exchange it.
 template <class Constraint>
 struct File
@@ -87,7 +101,10 @@ struct Vector_kind
 
   Constraint parse(const Json& c, double& weight) const
   {
-    return TVF::internal::parse_constraint(c, "constraint", matrices(), &weight);
+    const Constraint constraint = TVF::internal::parse_constraint(c, "constraint", matrices(), &weight);
+    check_displayable(largest_coordinate(constraint.vector), "a vector coordinate");
+    check_displayable(std::abs(constraint.value), "a value");
+    return constraint;
   }
   File<Constraint> parse_file(const Json& root) const
   {
@@ -162,7 +179,9 @@ struct N_field_kind
   Constraint parse(const Json& c, double& weight) const
   {
     weight = 1;
-    return TVF::internal::parse_n_field_constraint(c, "constraint", operators());
+    const Constraint constraint = TVF::internal::parse_n_field_constraint(c, "constraint", operators());
+    check_displayable(largest_coordinate(constraint.vector), "a vector coordinate");
+    return constraint;
   }
   File<Constraint> parse_file(const Json& root) const
   {

@@ -199,6 +199,34 @@ async function main() {
       `dragging the tip turned the vector by ${turn.toFixed(0)} degrees`);
     await checkFieldMatches(page, moved, 'the field at that face follows the new vector');
 
+    // --- Exact answers: the reduced field at once, the exact one replaces it unasked ---
+    await page.check('input[name="solver"][value="full"]');
+    await page.waitForFunction(() => window.tvfEditor.lastField()?.header.answer?.exact === true, null, { timeout: 60000 });
+    const exact = await page.evaluate(() => window.tvfEditor.lastField().header);
+    check(exact.report.residual < 1e-9, `the exact field meets the constraints to ${exact.report.residual.toExponential(1)} ` +
+      '(solver precision, < 1e-9)');
+    await checkFieldMatches(page, moved, 'the exact field on the page is the constraint\'s vector (float32)');
+    const badge = await page.locator('#answer-badge').textContent();
+    check(badge.startsWith('exact') && exact.difference > 0,
+      `the badge says which answer is on screen and how far the reduced one was: "${badge}"`);
+    // A move: reduced at once, then exact again.
+    const handleNow = await page.evaluate((id) => window.tvfEditor.handleScreen(id), placed.id);
+    await page.mouse.move(canvas.x + handleNow.anchor.x, canvas.y + handleNow.anchor.y);
+    await page.mouse.down();
+    await page.mouse.move(canvas.x + handleNow.anchor.x + 40, canvas.y + handleNow.anchor.y + 30, { steps: 5 });
+    await page.mouse.up();
+    await page.evaluate(() => window.tvfEditor.idle());
+    await page.waitForFunction(() => window.tvfEditor.lastField()?.header.answer?.exact === true, null, { timeout: 60000 });
+    const afterMove = (await page.evaluate(() => window.tvfEditor.constraints()))[0].constraint;
+    await checkFieldMatches(page, afterMove, `after moving it to face ${afterMove.face}, the exact field follows`);
+    const exactLog = (await page.evaluate(() => window.tvfEditor.latencyLog())).filter((e) => e.exact_ms !== undefined);
+    check(exactLog.length > 0 && exactLog.every((e) => e.exact_ms >= e.total_ms - 1e-6),
+      `${exactLog.length} edits with the time to their exact field (${exactLog.map((e) => e.exact_ms.toFixed(1)).join(', ')} ms)`);
+    await page.check('input[name="solver"][value="reduced"]');
+    await page.evaluate(() => window.tvfEditor.idle());
+    constraints = await page.evaluate(() => window.tvfEditor.constraints());
+    const current = constraints[0].constraint;
+
     // --- A source by a click, selected and removed with the Delete key ---
     await page.click('button[data-tool="source"]');
     const other = { x: canvas.x + centre.x - 0.12 * canvas.height, y: canvas.y + centre.y + 0.1 * canvas.height };
@@ -210,7 +238,8 @@ async function main() {
     await page.keyboard.press('Delete');
     await page.evaluate(() => window.tvfEditor.idle());
     constraints = await page.evaluate(() => window.tvfEditor.constraints());
-    check(constraints.length === 1 && constraints[0].id === placed.id, 'Delete removes the selected source');
+    check(constraints.length === 1 && constraints[0].id === placed.id && constraints[0].constraint.face === current.face,
+      'Delete removes the selected source');
 
     // --- Display: divergence colours and streamlines, through the panel ---
     await page.selectOption('#colour', 'divergence');

@@ -256,6 +256,8 @@ TEST_F(Server_test, hostile_messages_get_errors_and_the_server_stays_up)
       {"{\"type\":\"add\",\"constraint\":{\"type\":\"divergence\",\"vertex\":99999999,\"value\":1}}", "range"},
       {"{\"type\":\"add\",\"constraint\":{\"type\":\"curl\",\"edge\":4000000000,\"value\":1}}", "index"},
       {"{\"type\":\"add\",\"constraint\":{\"type\":\"vector\",\"face\":3,\"vector\":[1,0]}}", "3 numbers"},
+      {"{\"type\":\"add\",\"constraint\":{\"type\":\"vector\",\"face\":3,\"vector\":[1e300,1e300,0]}}",
+       "beyond what the page shows"},
       {"{\"type\":\"add\",\"constraint\":{\"type\":\"warp\",\"face\":3}}", "unknown type"},
       {"{\"type\":\"add\",\"constraint\":5}", "not a JSON object"},
       {"{\"type\":\"add\"}", "missing \"constraint\""},

@@ -21,8 +21,11 @@ export class Editor {
     this.field = null;
     this.n = 1; // the design's n: 1 for vector fields
     this.display = { lines: 'fur', strokes: 4000, length: 0.03, separation: 0.02, colour: 'magnitude' };
+    this.sentTimes = new Map(); // request -> when it left: the exact fields that follow edits
     this.queue = new RequestQueue((message) => {
       const sentAt = performance.now();
+      this.sentTimes.set(message.request, sentAt);
+      if (this.sentTimes.size > 200) this.sentTimes.delete(this.sentTimes.keys().next().value);
       this.socket.send(JSON.stringify(message));
       this.viewer.holdFrames(sentAt + HOLD_FRAMES_MS);
       return sentAt;
@@ -80,6 +83,9 @@ export class Editor {
       case 'error':
         this.ui.error(message.message);
         break;
+      case 'refinement_failed': // unasked, like the exact fields: not an answer to a request
+        this.ui.error(message.message);
+        return;
     }
     const answered = this.queue.matches(message.request);
     if (message.type === 'error' && answered?.onError) answered.onError(message);
@@ -94,6 +100,7 @@ export class Editor {
       return;
     }
     if (header.type !== 'field') return;
+    if (header.refined) return this.onExact(header, arrays, arrivedAt);
     const entry = this.queue.matches(header.request);
     this.field = { header, arrays };
     this.showField();
@@ -110,6 +117,23 @@ export class Editor {
     }
     this.ui.field(header);
     this.queue.onFieldDrawn(entry, header);
+  }
+
+  // The exact field that follows an edit's reduced one (exact answers on): it replaces the
+  // field whole, in one frame; the latency log gets the time from the edit to this frame.
+  onExact(header, arrays, arrivedAt) {
+    this.field = { header, arrays };
+    this.showField();
+    this.syncHandles(header.ids || []);
+    this.viewer.renderNow();
+    this.viewer.finish();
+    const drawnAt = performance.now();
+    const sentAt = this.sentTimes.get(header.request);
+    if (sentAt !== undefined) {
+      this.latency.exact(header.request, { exact_ms: drawnAt - sentAt, exact_server_ms: header.timings?.server_ms,
+        exact_transfer_ms: arrivedAt - sentAt - (header.timings?.server_ms ?? 0) });
+    }
+    this.ui.field(header);
   }
 
   // Colours and lines of the last field, as the display asks.

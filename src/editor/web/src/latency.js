@@ -2,7 +2,7 @@
 // the page measures around them (the network and the drawing).
 
 export const COLUMNS = ['solve_ms', 'reconstruct_ms', 'lines_ms', 'scalar_ms', 'server_ms', 'transfer_ms',
-  'draw_ms', 'total_ms', 'bytes'];
+  'draw_ms', 'total_ms', 'exact_ms', 'bytes'];
 
 // message: the request as sent; times (performance.now()): sentAt when it left, arrivedAt
 // when its field arrived, updatedAt when the field was decoded and in the buffers, drawnAt
@@ -54,13 +54,22 @@ export class LatencyPanel {
     this.show();
   }
 
+  // The exact field of request `request` is on screen (exact answers on): `times.exact_ms`
+  // from sending the edit to the frame that shows it.
+  exact(request, times) {
+    const entry = [...this.log].reverse().find((e) => e.request === request);
+    if (!entry) return;
+    Object.assign(entry, times);
+    this.show();
+  }
+
   show() {
     // Edits only: the first field and display changes are not what the panel is about.
     const edits = this.log.filter((e) => ['add', 'change', 'remove', 'clear', 'load'].includes(e.type));
     const last = edits[edits.length - 1];
     const recent = edits.slice(-20);
     const rows = COLUMNS.map((c) => {
-      const label = c === 'bytes' ? 'message' : c.replace('_ms', '');
+      const label = c === 'bytes' ? 'message' : c === 'exact_ms' ? 'exact field' : c.replace('_ms', '');
       return `<tr><th>${label}</th><td>${last ? format(c, last[c]) : '–'}</td>` +
         `<td>${format(c, median(recent.map((e) => e[c])))}</td></tr>`;
     });

@@ -244,14 +244,32 @@ export class Panel {
     const lines = [`${header.solver} solver, ${header.basis_size} eigenfields, ω = ${number(header.omega)}`,
       `constraint residual ${number(report.residual)}, max |v| ${number(header.magnitude_max)}`];
     if (header.difference !== undefined) {
-      lines.push(`reduced vs full: ${number(header.difference)} (full solve ${number(header.timings?.full_ms)} ms)`);
+      lines.push(`reduced vs exact: ${number(header.difference)} (rel. L2), largest angle ${number(header.largest_angle_deg)}°`);
     }
     if (report.undetermined_harmonic) lines.push(`harmonic part undetermined: ${report.undetermined_harmonic}`);
     for (const w of report.warnings || []) lines.push(`warning: ${w}`);
     $('field-info').innerHTML = lines.map((l) => `<div>${l.replace(/</g, '&lt;')}</div>`).join('');
     this.legend(header);
     this.singularities(header);
+    this.answerBadge(header);
     this.status(`ready · ${(header.ids || []).length} constraint${(header.ids || []).length === 1 ? '' : 's'}`);
+  }
+
+  // Which answer is on screen: the exact spline, or the reduced one in d basis elements (with
+  // exact answers on, the exact one follows); once both are known, how far apart they are.
+  answerBadge(header) {
+    const badge = $('answer-badge');
+    const answer = header.answer || { exact: false, pending: 0 };
+    badge.hidden = false;
+    badge.classList.toggle('exact', answer.exact);
+    let text = answer.exact ? 'exact' : `reduced (d = ${header.basis_size})`;
+    if (!answer.exact && header.solver === 'full') {
+      text += answer.pending > 0 ? ` · exact on its way (${answer.pending} pending)` : ' · exact on its way';
+    }
+    if (header.difference !== undefined) {
+      text += ` · reduced vs exact: ${number(100 * header.difference)}%, largest angle ${number(header.largest_angle_deg)}°`;
+    }
+    badge.textContent = text;
   }
 
   // n-fields: how many singular vertices of each index, and their sum (Poincare-Hopf).
