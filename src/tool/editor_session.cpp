@@ -176,10 +176,11 @@ void Editor_session::set_n(Request& r)
       if(status.failed) throw Message_error("the basis of n = " + std::to_string(n) + " fields could not be made: " + status.error);
       r.text("\"type\":\"status\",\"stage\":" + quote(status.stage) + ",\"fraction\":" + short_number(status.fraction));
     }
-  // A new design: the constraints of another n do not carry over.  The solver, tension and
-  // basis size do (the size within what the new basis has).
+  // A new design: the constraints of another n do not carry over.  The solver and tension
+  // do; the basis size is the one sessions start with (`tvf serve -d`, within what the new
+  // basis has).
   const bool full = design_->full();
-  const int size = design_->basis_size();
+  const int size = model_->initial_basis_size();
   std::unique_ptr<Editor_design> design =
       n == 1 ? make_vector_design(model_, size, design_->omega())
              : make_n_field_design(model_, n, order, size - size % 2, design_->omega());
