@@ -246,7 +246,7 @@ inline std::string sphere_path() { return std::string(TVF_CGAL_DATA_DIR) + "/mes
 
 class Server_test : public ::testing::Test
 {
-protected:
+public:
   static void SetUpTestSuite() { server = new Server_process({TVF_TOOL, "serve", sphere_path(), "-n", "60", "--port", "0"}); }
   static void TearDownTestSuite() { delete server; }
   inline static Server_process* server = nullptr;

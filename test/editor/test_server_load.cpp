@@ -1,0 +1,125 @@
+// Copyright (c) 2026 The Tangent_vector_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The editor's server under load: sessions editing at once (half of them with exact answers
+// on a worker thread each) while other connections misbehave -- frames cut off, oversized
+// messages dropped mid-way, upgrades closed at once, sessions closed while their exact answer
+// is being computed.  Every honest session must get correct fields throughout, and the
+// connections that went away must give back their slots (the server serves at most 16 at once).
+
+#include "server_test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <thread>
+
+namespace {
+
+using namespace server_test;
+
+// A session that edits one vector constraint `edits` times (moves and value edits) and checks
+// every field it gets at the constrained face; false at the first wrong or missing field.
+bool edit_session(int port, int first_face, bool exact, int edits)
+{
+  try
+  {
+    Server_test::Session s(port);
+    if(exact)
+    {
+      s.client.send("{\"type\":\"set_solver\",\"solver\":\"full\"}");
+      while(!s.client.expect("field").json.get<bool>("answer.exact")) // the exact one follows
+        ;
+    }
+    int id = -1;
+    for(int k = 0; k < edits; ++k)
+    {
+      const int face = (first_face + 37 * (k / 3)) % 320; // a move every third edit
+      std::array<double, 3> v = tangent(s.mesh, face);
+      for(double& x : v) x *= 0.5 + 0.1 * (k % 3);
+      if(id < 0)
+      {
+        s.client.send("{\"type\":\"add\",\"constraint\":" + vector_constraint(face, v) + "}");
+        id = s.client.expect("added").json.get<int>("id");
+      }
+      else
+        s.client.send("{\"type\":\"change\",\"id\":" + std::to_string(id) + ",\"constraint\":" + vector_constraint(face, v) + "}");
+      Message field = s.client.expect("field");
+      // With exact answers on, the exact field may follow: take it too (it meets the constraint as well).
+      if(exact && !field.json.get<bool>("answer.exact")) field = s.client.expect("field");
+      if(field.type() != "field" || distance(face_vector(field, face), v) > 1e-5) return false;
+    }
+    return true;
+  }
+  catch(const std::exception&)
+  {
+    return false;
+  }
+}
+
+TEST_F(Server_test, sessions_keep_working_while_other_connections_misbehave)
+{
+  const int port = server->port();
+  std::atomic<int> good{0};
+  std::vector<std::thread> sessions;
+  for(int i = 0; i < 6; ++i)
+    sessions.emplace_back([&, i] { good += edit_session(port, 11 * i + 3, i % 2 == 1, 15); });
+
+  // Meanwhile: misbehaving connections, each of which must end only itself.
+  for(int i = 0; i < 12; ++i)
+  {
+    { // a frame header announcing 1000 bytes, a few of them, then the socket closes
+      Client cut(port);
+      const unsigned char frame[] = {0x81, 0xFE, 0x03, 0xE8, 1, 2, 3, 4, '{', '"'};
+      asio::write(cut.stream().next_layer(), asio::buffer(frame, sizeof frame));
+      cut.stream().next_layer().close();
+    }
+    { // an upgrade, closed at once
+      Client closed(port);
+      closed.stream().next_layer().close();
+    }
+    { // a session closed while its exact answer is being computed
+      Session dropped(port);
+      dropped.client.send("{\"type\":\"set_solver\",\"solver\":\"full\"}");
+      dropped.client.send("{\"type\":\"add\",\"constraint\":" + vector_constraint(5 + i, tangent(dropped.mesh, 5 + i)) + "}");
+      dropped.client.stream().next_layer().close();
+    }
+  }
+  { // an oversized message (2 MiB), answered with an error while the others go on
+    Session big(port);
+    big.client.send(std::string(2 << 20, ' '));
+    EXPECT_NE(big.client.expect_error().find("exceeds the limit"), std::string::npos);
+  }
+  for(std::thread& t : sessions) t.join();
+  EXPECT_EQ(good.load(), 6) << "sessions whose fields were all right";
+
+  // Every connection that went away gave back its slot: 16 sessions (the limit) at once.  The
+  // server's threads of the connections just closed may need a moment to end: a refused
+  // connection is retried for up to 10 s.
+  std::vector<std::unique_ptr<Session>> full_house;
+  for(int i = 0; i < 16; ++i)
+    for(int attempt = 0;; ++attempt)
+    {
+      try
+      {
+        full_house.push_back(std::make_unique<Session>(port));
+        break;
+      }
+      catch(const std::exception& e)
+      {
+        ASSERT_LT(attempt, 100) << "session " << i << " of 16 was refused: " << e.what();
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+      }
+    }
+  for(auto& s : full_house)
+  {
+    s->client.send("{\"type\":\"ping\",\"request\":3}");
+    EXPECT_EQ(s->client.expect("pong").json.get<int>("request"), 3);
+  }
+  full_house.clear();
+  EXPECT_TRUE(server->running());
+  Session after(port);
+  EXPECT_EQ(after.info.json.get<int>("mesh.faces"), 320);
+}
+
+} // namespace
