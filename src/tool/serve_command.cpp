@@ -28,6 +28,9 @@
 #include <iostream>
 #include <sstream>
 #include <thread>
+#include <sys/socket.h>
+#include <mutex>
+#include <condition_variable>
 
 #ifndef TVF_EDITOR_DIST_DIR
 #define TVF_EDITOR_DIST_DIR ""
@@ -49,6 +52,62 @@ struct Server
   std::string web_root;
   int max_connections = 16;
   std::atomic<int> connections{0};
+  std::chrono::seconds stall_timeout{20};
+};
+
+// Ends a connection that stalls in the middle of a request or a message (a half-open or
+// slow client would otherwise hold its thread and its slot for ever): `begin` when bytes of
+// one are awaited, `end` when it is complete.  Idle connections between messages (a page
+// waiting for its user) are left alone.  The blocked read returns once the socket is shut down.
+class Stall_watchdog
+{
+public:
+  Stall_watchdog(tcp::socket& socket, std::chrono::seconds timeout)
+    : fd_(socket.native_handle()), timeout_(timeout), thread_([this] { run(); })
+  {}
+  ~Stall_watchdog()
+  {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      done_ = true;
+    }
+    changed_.notify_all();
+    thread_.join();
+  }
+  void begin()
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if(!waiting_) since_ = std::chrono::steady_clock::now();
+    waiting_ = true;
+  }
+  void end()
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    waiting_ = false;
+  }
+
+private:
+  void run()
+  {
+    std::unique_lock<std::mutex> lock(mutex_);
+    while(!done_)
+    {
+      changed_.wait_for(lock, std::chrono::milliseconds(200));
+      if(waiting_ && std::chrono::steady_clock::now() - since_ > timeout_)
+      {
+        ::shutdown(fd_, SHUT_RDWR);
+        waiting_ = false;
+      }
+    }
+  }
+
+  int fd_;
+  std::chrono::seconds timeout_;
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  bool done_ = false, waiting_ = false;
+  std::chrono::steady_clock::time_point since_;
+  std::thread thread_;
 };
 
 std::string content_type(const std::string& path)
@@ -117,6 +176,7 @@ http::response<http::string_body> answer(const http::request<http::string_body>&
 // over the size limit can be dropped and answered, instead of closing the connection.
 void run_websocket(tcp::socket socket, const http::request<http::string_body>& upgrade, const Server& server)
 {
+  Stall_watchdog watchdog(socket, server.stall_timeout);
   // Small messages (edits) must leave at once: Nagle's algorithm with delayed ACKs would
   // hold them for up to 40 ms.
   beast::error_code ignored;
@@ -147,12 +207,14 @@ void run_websocket(tcp::socket socket, const http::request<http::string_body>& u
     do
     {
       received += ws.read_some(buffer, 64 * 1024);
+      watchdog.begin(); // a message has begun: its rest must come
       if(received > limit)
       {
         oversized = true;
         buffer.clear(); // drop the rest as it comes: memory stays bounded
       }
     } while(!ws.is_message_done());
+    watchdog.end();
     if(oversized) session.refuse_oversized(received, send);
     else if(!ws.got_text()) session.refuse_binary(received, send);
     else session.handle_text(beast::buffers_to_string(buffer.data()), send);
@@ -171,11 +233,15 @@ void serve_connection(tcp::socket socket, Server& server)
   {
     for(;;)
     {
+      // The request must arrive whole within the stall timeout (then the socket is shut down).
+      std::unique_ptr<Stall_watchdog> watchdog = std::make_unique<Stall_watchdog>(socket, server.stall_timeout);
+      watchdog->begin();
       http::request_parser<http::string_body> parser;
       parser.header_limit(16 * 1024);
       parser.body_limit(64 * 1024);
       beast::error_code error;
       http::read(socket, buffer, parser, error);
+      watchdog.reset();
       if(error == http::error::end_of_stream || error == asio::error::eof || error == asio::error::connection_reset)
         return;
       if(error)
@@ -237,7 +303,9 @@ int serve_command(const Arguments& args)
     ("bind", po::value<std::string>()->default_value("127.0.0.1")->value_name("ADDRESS"),
      "address to listen on (the default serves this machine only)")
     ("web-root", po::value<std::string>()->value_name("DIR"), "directory of the page (default: the one built with tvf)")
-    ("max-connections", po::value<int>()->default_value(16)->value_name("N"), "connections served at once");
+    ("max-connections", po::value<int>()->default_value(16)->value_name("N"), "connections served at once")
+    ("stall-timeout", po::value<int>()->default_value(20)->value_name("S"),
+     "seconds a request or message may take to arrive once begun; a client that stalls longer is disconnected");
   if(!command.parse(args)) return 0; // --help
   const int port = command.get<int>("port");
   if(port < 0 || port > 65535) throw Usage_error("'--port' must lie in [0, 65535]");
@@ -247,6 +315,8 @@ int serve_command(const Arguments& args)
   if(command.has("size") && size <= 0) throw Usage_error("'--size' must be positive");
   const int max_connections = command.get<int>("max-connections");
   if(max_connections <= 0) throw Usage_error("'--max-connections' must be positive");
+  const int stall_timeout = command.get<int>("stall-timeout");
+  if(stall_timeout <= 0) throw Usage_error("'--stall-timeout' must be positive");
   std::string basis_path = command.has("basis") ? command.get<std::string>("basis") : std::string();
   if(!basis_path.empty() && extension(basis_path) != "tvfb")
     throw Usage_error("the basis file '" + basis_path + "' should end in .tvfb");
@@ -292,6 +362,7 @@ int serve_command(const Arguments& args)
   server.model = model;
   server.web_root = command.has("web-root") ? command.get<std::string>("web-root") : std::string(TVF_EDITOR_DIST_DIR);
   server.max_connections = max_connections;
+  server.stall_timeout = std::chrono::seconds(stall_timeout);
   if(!std::ifstream(server.web_root + "/index.html"))
     std::fprintf(stderr, "tvf: warning: no editor page in '%s' (built with npm; see --web-root)\n",
                  server.web_root.c_str());

@@ -247,7 +247,10 @@ inline std::string sphere_path() { return std::string(TVF_CGAL_DATA_DIR) + "/mes
 class Server_test : public ::testing::Test
 {
 public:
-  static void SetUpTestSuite() { server = new Server_process({TVF_TOOL, "serve", sphere_path(), "-n", "60", "--port", "0"}); }
+  static void SetUpTestSuite()
+  {
+    server = new Server_process({TVF_TOOL, "serve", sphere_path(), "-n", "60", "--port", "0", "--stall-timeout", "2"});
+  }
   static void TearDownTestSuite() { delete server; }
   inline static Server_process* server = nullptr;
 

@@ -122,4 +122,31 @@ TEST_F(Server_test, sessions_keep_working_while_other_connections_misbehave)
   EXPECT_EQ(after.info.json.get<int>("mesh.faces"), 320);
 }
 
+TEST_F(Server_test, stalled_clients_are_disconnected)
+{
+  // A client that begins a request or a message and stalls is cut off after the stall
+  // timeout (2 s for this server); an idle session between messages is not.
+  const int port = server->port();
+  Session idle(port);
+  const auto start = std::chrono::steady_clock::now();
+  Client stalled(port); // a frame announcing 1000 bytes, 2 of them sent, the socket kept open
+  const unsigned char frame[] = {0x81, 0xFE, 0x03, 0xE8, 1, 2, 3, 4, '{', '"'};
+  asio::write(stalled.stream().next_layer(), asio::buffer(frame, sizeof frame));
+  asio::io_context io;
+  tcp::socket silent(io); // a TCP connection that never sends its HTTP request
+  silent.connect(tcp::endpoint(asio::ip::make_address("127.0.0.1"), port));
+  beast::flat_buffer buffer;
+  beast::error_code error;
+  stalled.stream().read(buffer, error);
+  EXPECT_TRUE(error) << "the stalled message's connection stays open";
+  char byte;
+  silent.read_some(asio::buffer(&byte, 1), error);
+  EXPECT_TRUE(error) << "the silent connection stays open";
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_GT(seconds, 1.5);
+  EXPECT_LT(seconds, 10.0);
+  idle.client.send("{\"type\":\"ping\",\"request\":2}"); // idle for those seconds: still served
+  EXPECT_EQ(idle.client.expect("pong").json.get<int>("request"), 2);
+}
+
 } // namespace
