@@ -263,6 +263,8 @@ bool write_outputs(const Command_line& command, const Tool_mesh& mesh, const Eig
 /// Loads a basis saved by `tvf basis` (or `Spectral_basis::save`) and checks that it
 /// belongs to the mesh.  \throws Tool_error naming the file and the reason.
 std::shared_ptr<const TVF::Eigenfield_basis> load_basis(const Tool_mesh& mesh, const std::string& path);
+/// The `--basis FILE` option of the spectral subcommands (required or optional).
+void add_basis_option(Command_line& command, bool required);
 
 /// `reason`, prefixed with `'path': ` unless it names the file already.
 std::string about(const std::string& path, const std::string& reason);
