@@ -232,7 +232,7 @@ void Basic_refining_spline_solver<Reduced, Full>::refine(const Refinement_progre
     Entry& entry = entries_.at(id);
     try
     {
-      entry.full = full_->add_prepared(full_->prepare({entry.constraint})).front();
+      entry.full = full_->add(entry.constraint);
     }
     catch(const Infeasible_constraints& e)
     {

@@ -52,20 +52,20 @@ public:
     return out;
   }
 
-  int add(const Json& json, const Design_progress&, Edit_time& time) override
+  int add(const Json& json, double& solve_ms) override
   {
     Entry entry;
     const Constraint constraint = kind_.parse(json, entry.weight);
     const Clock::time_point start = Clock::now();
     entry.spline = spline_->add(constraint); // the reduced solver now, the full pull-back on the worker
-    time.reduced_ms = milliseconds_since(start);
+    solve_ms = milliseconds_since(start);
     const int id = next_id_++;
     entries_[id] = entry;
     changed(-1);
     return id;
   }
 
-  void change(int id, const Json& json, const Design_progress&, Edit_time& time) override
+  void change(int id, const Json& json, double& solve_ms) override
   {
     Entry& entry = find(id);
     double weight = 1;
@@ -73,7 +73,7 @@ public:
     const bool same_rows = spline_->constraint(entry.spline).same_rows_as(constraint);
     const Clock::time_point start = Clock::now();
     spline_->change(entry.spline, constraint); // unchanged if it throws
-    time.reduced_ms = milliseconds_since(start);
+    solve_ms = milliseconds_since(start);
     entry.weight = weight;
     // Only the values changed: the next field comes from the constraint's cached response.
     changed(same_rows ? id : -1);
@@ -93,7 +93,7 @@ public:
     changed(-1);
   }
 
-  std::vector<int> load(const Json& json, const Design_progress&) override
+  std::vector<int> load(const Json& json) override
   {
     const File<Constraint> file = kind_.parse_file(json);
     const int limit = kind_.model->limits().max_constraints;
@@ -129,7 +129,7 @@ public:
     return kind_.write_file(file, order_);
   }
 
-  void set_omega(double omega, const Design_progress&) override
+  void set_omega(double omega) override
   {
     spline_->set_omega(omega); // every pull-back again, on the worker
     changed(-1);
@@ -149,31 +149,32 @@ public:
     changed(-1);
   }
 
-  void set_full(bool on, const Design_progress&) override
+  void set_full(bool on) override
   {
     if(on) spline_->refine_in_background();
     else spline_->stop_refining(); // its pull-backs are big (one field per row): keep nothing unused
     full_ = on;
   }
 
-  bool refining() override
-  {
-    return full_ && spline_->refinement_error().empty() && !spline_->answer().exact;
-  }
   bool wait_exact(std::chrono::milliseconds timeout) override { return spline_->wait_until_exact(timeout); }
   std::string refinement_error() override { return spline_->refinement_error(); }
 
   Design_field field() override
   {
     Design_field out;
-    TVF::Spline_answer answer;
+    // The solve and its report first (timed as the solve), then the field from the same
+    // solver (timed as the reconstruction); should the worker's pull-backs come in between,
+    // the report is taken again from the solver that answered.
     Clock::time_point start = Clock::now();
+    const bool exact_before = spline_->answer().exact;
+    out.report = spline_->report();
+    out.solve_ms = milliseconds_since(start);
+    TVF::Spline_answer answer;
+    start = Clock::now();
     const TVF::Constraint_id edited = edited_ >= 0 ? entries_.at(edited_).spline : -1;
     out.x = edited >= 0 ? spline_->field_after_value_edit(edited, &answer) : spline_->field(&answer);
     (answer.exact ? out.full_ms : out.reconstruct_ms) = milliseconds_since(start);
-    start = Clock::now();
-    out.report = spline_->report();
-    out.solve_ms = milliseconds_since(start);
+    if(answer.exact != exact_before) out.report = spline_->report();
     out.exact = answer.exact;
     out.pending = answer.pending;
     // The two answers of one constraint set, once both are known: the reduced one is sent

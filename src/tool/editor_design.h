@@ -28,15 +28,6 @@ namespace tvf_tool {
 namespace TVF = CGAL::Tangent_vector_fields;
 class Editor_model;
 
-/// Called while the full solver works: stage and fraction.
-typedef std::function<void(const std::string&, double)> Design_progress;
-
-/// Milliseconds an edit spent in the reduced and the full solver.
-struct Edit_time
-{
-  double reduced_ms = 0, full_ms = 0;
-};
-
 /// The display settings of a session (`set_display`).
 struct Display_settings
 {
@@ -77,22 +68,22 @@ public:
   virtual std::vector<int> ids() const = 0;
 
   // Edits; each leaves the design unchanged if it throws (Message_error, Invalid_input).
-  virtual int add(const TVF::internal::Json& constraint, const Design_progress& progress, Edit_time& time) = 0;
-  virtual void change(int id, const TVF::internal::Json& constraint, const Design_progress& progress, Edit_time& time) = 0;
+  // `solve_ms` receives the time the reduced solver took for the edit (the full pull-backs
+  // are the worker's).
+  virtual int add(const TVF::internal::Json& constraint, double& solve_ms) = 0;
+  virtual void change(int id, const TVF::internal::Json& constraint, double& solve_ms) = 0;
   virtual void remove(int id) = 0;
   virtual void clear() = 0;
   /// A whole constraint file object of the design's kind; all or nothing.  Returns the new ids
   /// in file order.
-  virtual std::vector<int> load(const TVF::internal::Json& file, const Design_progress& progress) = 0;
+  virtual std::vector<int> load(const TVF::internal::Json& file) = 0;
   /// The constraint file of the session (JSON text).
   virtual std::string save() const = 0;
-  virtual void set_omega(double omega, const Design_progress& progress) = 0;
+  virtual void set_omega(double omega) = 0;
   virtual void set_basis_size(int size) = 0;
   /// Exact answers on (the full pull-backs on a worker thread: answers are reduced until
   /// every constraint has one) or off (the full solver and its pull-backs are dropped).
-  virtual void set_full(bool full, const Design_progress& progress) = 0;
-  /// Exact answers on and still pending (without a refinement error).
-  virtual bool refining() = 0;
+  virtual void set_full(bool full) = 0;
   /// Waits at most `timeout` for the exact answer; true once it is there.
   virtual bool wait_exact(std::chrono::milliseconds timeout) = 0;
   /// Why the exact answer cannot be had (empty if it can).

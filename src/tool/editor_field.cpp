@@ -149,7 +149,7 @@ void Editor_session::send_field(Request& r, bool refined)
                         ",\"reconstruct_ms\":" + short_number(reconstruct_ms) + ",\"lines_ms\":" + short_number(lines_ms) +
                         ",\"scalar_ms\":" + short_number(scalar_ms) +
                         (design_->n() > 1 ? ",\"singularities_ms\":" + short_number(singularities_ms) : std::string()) +
-                        (field.exact ? ",\"full_ms\":" + short_number(r.full_ms + field.full_ms) : std::string());
+                        (field.exact ? ",\"full_ms\":" + short_number(field.full_ms) : std::string());
   // server_ms is measured last, just before the message is handed to the transport.
   members += ",\"server_ms\":" + short_number(milliseconds_since(r.received)) + "}";
   if(field.difference >= 0)

@@ -73,9 +73,9 @@ struct Editor_session::Request
   long long id = 0;
   Clock::time_point received;
   const Send* send = nullptr;
-  // Time spent in the solvers by the edit itself (pull-backs of new rows, the small
-  // system's update), added to the solve times of the field message.
-  double reduced_ms = 0, full_ms = 0;
+  // Time the reduced solver spent on the edit itself (a new row's pull-back in the basis),
+  // added to the solve time of the field message.
+  double reduced_ms = 0;
 
   std::string echo() const { return has_id ? ",\"request\":" + std::to_string(id) : std::string(); }
   void text(const std::string& members) const
@@ -83,14 +83,6 @@ struct Editor_session::Request
     Outgoing out;
     out.data = "{" + members + echo() + "}";
     (*send)(out);
-  }
-  void progress(const std::string& stage, double fraction) const
-  {
-    text("\"type\":\"progress\",\"stage\":" + quote(stage) + ",\"fraction\":" + short_number(fraction));
-  }
-  Design_progress progress_callback() const
-  {
-    return [this](const std::string& stage, double fraction) { progress(stage, fraction); };
   }
 };
 

@@ -184,7 +184,7 @@ void Editor_session::set_n(Request& r)
   std::unique_ptr<Editor_design> design =
       n == 1 ? make_vector_design(model_, size, design_->omega())
              : make_n_field_design(model_, n, order, size - size % 2, design_->omega());
-  if(full) design->set_full(true, r.progress_callback());
+  if(full) design->set_full(true);
   design_ = std::move(design);
   if(!design_->has_scalar(display_.scalar)) display_.scalar = "none";
   r.text(info_json());
@@ -196,10 +196,7 @@ void Editor_session::add(Request& r)
   require_ready(r);
   if(static_cast<int>(design_->ids().size()) >= model_->limits().max_constraints)
     throw Message_error("too many constraints (the limit is " + std::to_string(model_->limits().max_constraints) + ")");
-  Edit_time time;
-  const int id = design_->add(member(r.tree, "constraint"), r.progress_callback(), time);
-  r.reduced_ms = time.reduced_ms;
-  r.full_ms = time.full_ms;
+  const int id = design_->add(member(r.tree, "constraint"), r.reduced_ms);
   r.text("\"type\":\"added\",\"id\":" + std::to_string(id));
   send_field(r);
 }
@@ -208,10 +205,7 @@ void Editor_session::change(Request& r)
 {
   require_ready(r);
   const int id = static_cast<int>(integer_member(r.tree, "id", 0, 1 << 30));
-  Edit_time time;
-  design_->change(id, member(r.tree, "constraint"), r.progress_callback(), time);
-  r.reduced_ms = time.reduced_ms;
-  r.full_ms = time.full_ms;
+  design_->change(id, member(r.tree, "constraint"), r.reduced_ms);
   send_field(r);
 }
 
@@ -232,7 +226,7 @@ void Editor_session::clear(Request& r)
 void Editor_session::load(Request& r)
 {
   require_ready(r);
-  const std::vector<int> ids = design_->load(member(r.tree, "file"), r.progress_callback());
+  const std::vector<int> ids = design_->load(member(r.tree, "file"));
   r.text("\"type\":\"loaded\",\"ids\":" + ids_json(ids) + ",\"omega\":" + number(design_->omega()));
   send_field(r);
 }
@@ -248,7 +242,7 @@ void Editor_session::set_omega(Request& r)
   require_ready(r);
   const double omega = number_member(r.tree, "omega");
   if(omega < 0 || omega > 1e12) throw Message_error("\"omega\" must lie in [0, 1e12]");
-  design_->set_omega(omega, r.progress_callback());
+  design_->set_omega(omega);
   send_field(r);
 }
 
@@ -267,7 +261,7 @@ void Editor_session::set_solver(Request& r)
   require_ready(r);
   const std::string solver = text_member(r.tree, "solver");
   if(solver != "reduced" && solver != "full") throw Message_error("\"solver\" must be \"reduced\" or \"full\"");
-  design_->set_full(solver == "full", r.progress_callback());
+  design_->set_full(solver == "full");
   send_field(r);
 }
 
