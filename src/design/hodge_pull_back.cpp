@@ -73,7 +73,7 @@ double Hodge_pull_back::factor() const
 template <class Solve, class Screened_solve>
 Eigen::MatrixXd Hodge_pull_back::chain(const Eigen::MatrixXd& rhs, const Eigen::SparseMatrix<double>& laplacian,
                                        const Eigen::VectorXd& masses, const Solve& solve,
-                                       const Screened_solve& screened, double& residual) const
+                                       const Screened_solve& screened, double* residual) const
 {
   auto relative = [](const Eigen::MatrixXd& r, const Eigen::MatrixXd& b) {
     return b.norm() > 0 ? r.norm() / b.norm() : r.norm();
@@ -83,18 +83,19 @@ Eigen::MatrixXd Hodge_pull_back::chain(const Eigen::MatrixXd& rhs, const Eigen::
   const Eigen::MatrixXd q = solve(b2);
   // Solver precision: residuals of the second-order systems, over the whole block
   // (a column may have a zero right-hand side: curl rows have no exact part).
-  residual = std::max({residual, relative(laplacian * f - rhs, rhs), relative(laplacian * q - b2, b2)});
+  if(residual) *residual = std::max({*residual, relative(laplacian * f - rhs, rhs), relative(laplacian * q - b2, b2)});
   if(energy_ == Design_energy::dirichlet && omega_ == 0) return q;
   Eigen::MatrixXd b3 = masses.asDiagonal() * q;
   if(omega_ > 0)
   {
     b3 *= screened_->rhs_scale;
     const Eigen::MatrixXd p = screened(b3);
-    residual = std::max(residual, relative(laplacian * p + screened_->shift * (masses.asDiagonal() * p) - b3, b3));
+    if(residual)
+      *residual = std::max(*residual, relative(laplacian * p + screened_->shift * (masses.asDiagonal() * p) - b3, b3));
     return p;
   }
   const Eigen::MatrixXd p = solve(b3);
-  residual = std::max(residual, relative(laplacian * p - b3, b3));
+  if(residual) *residual = std::max(*residual, relative(laplacian * p - b3, b3));
   return p;
 }
 
@@ -130,11 +131,14 @@ Eigen::MatrixXd Hodge_pull_back::apply(const Eigen::MatrixXd& R, Eigen::MatrixXd
     if(exact < 1e-13 * coexact) GtR.col(j).setZero();
     if(coexact < 1e-13 * exact) GstR.col(j).setZero();
   }
-  const Eigen::MatrixXd p = chain(GtR, ops.W(), M, vertex_solve, vertex_screened, residual);
+  // The residuals (three sparse products per part) are measured on the first block after a
+  // factorisation: they tell the solver's precision, which later blocks share.
+  double* measured = residual_measured_.exchange(true) ? nullptr : &residual;
+  const Eigen::MatrixXd p = chain(GtR, ops.W(), M, vertex_solve, vertex_screened, measured);
   Eigen::MatrixXd Y = (ops.G() * p) * u;
   auto edge_solve = [&](const Eigen::MatrixXd& b) { return hodge_->solve_edge_laplacian(b); };
   auto edge_screened = [&](const Eigen::MatrixXd& b) { return screened_->edge_solver.solve(b); };
-  const Eigen::MatrixXd p_star = chain(GstR, ops.W_star(), M_star, edge_solve, edge_screened, residual);
+  const Eigen::MatrixXd p_star = chain(GstR, ops.W_star(), M_star, edge_solve, edge_screened, measured);
   const Eigen::MatrixXd Gp = (ops.G_star_interior() * p_star) * u;
   for(Eigen::Index j = 0; j < m; ++j) Y.col(j) += ops.rotate(Gp.col(j));
   const int nh = hodge_->harmonic_dimension();

@@ -22,8 +22,9 @@ struct Full_solve_statistics
 {
   double factor_seconds = 0;    ///< factorisations (first pull-back, and after a new omega)
   double pull_back_seconds = 0; ///< all pull-backs so far
-  /// Largest relative residual `|A Z - B|_F / |B|_F` of the second-order solves of a block
-  /// of pull-backs (`A` = `W`, `W*` or their screened forms): the solver precision.
+  /// Largest relative residual `|A Z - B|_F / |B|_F` of the second-order solves of the first
+  /// block of pull-backs after a factorisation (`A` = `W`, `W*` or their screened forms): the
+  /// solver precision (not measured again for later blocks, which share the factors).
   /// (The residual through the fourth-order operator, `|(B + omega S) y - Pi r^T|`, would be
   /// about `eps cond(B)` — 1e-6 at 20k faces, 1e-3 at 70k — whatever the accuracy of `y`.)
   double residual = 0;

@@ -13,6 +13,7 @@
 
 #include <Eigen/Core>
 
+#include <atomic>
 #include <memory>
 
 namespace CGAL {
@@ -48,8 +49,9 @@ public:
   /// Factors what the pull-backs need (done by the first `apply` otherwise); returns seconds.
   double factor() const;
   /// `Y` (`2nf x m`) for the rows `R` (`2nf x m`, frame coordinates); `harmonic` receives
-  /// their harmonic parts `U_h^T R u` (`nh x m`, orthonormal for MX / u^2).  `residual` is
-  /// raised to the largest relative residual of the second-order solves (solver precision).
+  /// their harmonic parts `U_h^T R u` (`nh x m`, orthonormal for MX / u^2).  The first call
+  /// raises `residual` to the largest relative residual of its second-order solves (the
+  /// solver precision; later calls share the factorisations and leave it).
   Eigen::MatrixXd apply(const Eigen::MatrixXd& R, Eigen::MatrixXd& harmonic, double& residual) const;
   /// `Q X` in the length unit (S MX^-1 S formed as products only).
   Eigen::MatrixXd apply_energy(const Eigen::MatrixXd& X) const;
@@ -64,13 +66,14 @@ private:
   template <class Solve, class Screened_solve>
   Eigen::MatrixXd chain(const Eigen::MatrixXd& rhs, const Eigen::SparseMatrix<double>& laplacian,
                         const Eigen::VectorXd& masses, const Solve& solve, const Screened_solve& screened,
-                        double& residual) const;
+                        double* residual) const;
 
   std::shared_ptr<const Hodge_solver> hodge_;
   Design_energy energy_;
   double omega_, u_;
   mutable std::unique_ptr<Screened> screened_;
   mutable bool factored_ = false;
+  mutable std::atomic<bool> residual_measured_{false};
 };
 
 } // namespace internal
