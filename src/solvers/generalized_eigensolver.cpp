@@ -532,6 +532,10 @@ Eigenpairs lowest_eigenpairs(const Sparse_matrix& A, const Eigen::VectorXd& d, i
     throw Invalid_input("asked for " + std::to_string(count) + " eigenpairs but the space has dimension " +
                         std::to_string(n - c));
   if(n > 0 && !(d.minCoeff() > 0)) throw Invalid_input("eigenproblem: the masses must be positive");
+  // A NaN tolerance would never be met: the eigensolver would fail after all its restarts
+  // with a misleading "misses the tolerance"; 0 or less would ask for the impossible.
+  if(!(options.tolerance > 0 && options.tolerance < 1))
+    throw Invalid_input("eigenproblem: the tolerance must lie in (0, 1) (got " + std::to_string(options.tolerance) + ")");
   const Problem p(A, d, kernel);
   if(count == 0)
   {
