@@ -487,13 +487,27 @@ Position Streamline_walker::start_position(int face, const Barycentric& beta, in
   return pos;
 }
 
+void check_streamline_options(const Streamline_options& o)
+{
+  // NaN would pass every comparison unnoticed: no length limit, no zero faces, no loop test.
+  if(std::isnan(o.maximum_length)) throw Invalid_input("streamlines: maximum_length is NaN (0 or less: no limit)");
+  if(o.maximum_segments < 1)
+    throw Invalid_input("streamlines: maximum_segments must be at least 1 (got " + std::to_string(o.maximum_segments) +
+                        ")");
+  if(!(o.zero_field_tolerance >= 0) || !std::isfinite(o.zero_field_tolerance))
+    throw Invalid_input("streamlines: zero_field_tolerance must be finite and non-negative");
+  if(!(o.loop_closure_tolerance >= 0) || !std::isfinite(o.loop_closure_tolerance))
+    throw Invalid_input("streamlines: loop_closure_tolerance must be finite and non-negative (0: no loop test)");
+}
+
 Walk_settings Streamline_walker::settings(const Streamline_options& o, double sign) const
 {
+  check_streamline_options(o);
   Walk_settings s;
   s.sign = sign;
   const double l = to_absolute(o.maximum_length, o.length_unit);
   s.maximum_length = l > 0 ? l : infinity;
-  s.maximum_segments = std::max(1, o.maximum_segments);
+  s.maximum_segments = o.maximum_segments;
   s.zero_threshold = o.zero_field_tolerance * maximum_magnitude;
   return s;
 }

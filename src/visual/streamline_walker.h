@@ -286,6 +286,10 @@ private:
 /// Evenly spaced streamlines (evenly_spaced_streamlines.cpp).
 std::vector<Streamline> evenly_spaced_streamlines(const Streamline_walker& walker, const Evenly_spaced_options& o);
 
+/// \throws Invalid_input for options no trace can honour: a NaN length limit, fewer than one
+/// segment, a tolerance that is negative or not finite.
+void check_streamline_options(const Streamline_options& o);
+
 } // namespace internal
 } // namespace Tangent_vector_fields
 } // namespace CGAL
