@@ -39,13 +39,13 @@ std::vector<Streamline> evenly_spaced_streamlines(const Streamline_walker& walke
   if(o.maximum_streamlines < 0)
     throw Invalid_input("evenly spaced streamlines: maximum_streamlines must not be negative (0: no limit)");
   check_streamline_options(o.tracing);
-  // Without a limit the streamlines fill the surface: about area / separation^2 of them.  Far
-  // more than any picture holds means a separation in the wrong unit; it would run for ever.
+  // The streamlines fill the surface: about area / separation^2 of them, each sampled every
+  // quarter separation.  Far more than any picture holds means a separation in the wrong
+  // unit: it would run for ever, and even a few lines would exhaust the memory with samples.
   const double expected_lines = walker.total_area / (separation * separation);
-  if(o.maximum_streamlines == 0 && !(expected_lines <= max_expected_streamlines))
-    throw Invalid_input("evenly spaced streamlines: the separation is too small for the surface (it would take about " +
-                        std::to_string(static_cast<double>(expected_lines)) +
-                        " streamlines): use a larger separation or set maximum_streamlines");
+  if(!(expected_lines <= max_expected_streamlines))
+    throw Invalid_input("evenly spaced streamlines: the separation is too small for the surface (about " +
+                        std::to_string(expected_lines) + " streamlines would fill it, at most 1e7)");
   const double test_distance = o.test_ratio * separation;
   const double sample_step = test_distance / 2;
   const double seed_distance = 0.9 * separation;
@@ -55,9 +55,7 @@ std::vector<Streamline> evenly_spaced_streamlines(const Streamline_walker& walke
   Sample_grid grid(separation, walker.box_min);
   std::mt19937_64 gen(o.random_seed);
   const std::vector<double> cumulative = walker.cumulative_areas();
-  // Clamped: with a limit on the lines the candidates may outnumber what a long holds.
-  const long random_candidates =
-      static_cast<long>(std::min(std::ceil(4 * expected_lines), 4 * max_expected_streamlines)) + 16;
+  const long random_candidates = static_cast<long>(std::ceil(4 * expected_lines)) + 16;
 
   std::vector<Streamline> result;
   std::deque<std::pair<int, std::vector<Segment_record>>> queue; // accepted lines to seed beside

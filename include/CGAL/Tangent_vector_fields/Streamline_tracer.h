@@ -272,8 +272,8 @@ public:
   /// \throws Invalid_input for a separation that is not positive, a `test_ratio` outside
   ///         `(0, 1]`, `tracing.branch` other than 0, a negative or non-finite
   ///         `minimum_length_ratio`, a negative `maximum_streamlines`, bad `tracing` options
-  ///         (as `trace`), or, without `maximum_streamlines`, a separation so small that the
-  ///         surface would take more than 1e7 streamlines (area / separation^2).
+  ///         (as `trace`), or a separation so small that the surface would take more than
+  ///         1e7 streamlines (area / separation^2).
   std::vector<Streamline> evenly_spaced(const Evenly_spaced_options& options = Evenly_spaced_options()) const;
 
   /// Short strokes traced forward from random roots, uniformly distributed by area: per
