@@ -45,7 +45,7 @@ std::vector<Streamline> evenly_spaced_streamlines(const Streamline_walker& walke
   const double expected_lines = walker.total_area / (separation * separation);
   if(!(expected_lines <= max_expected_streamlines))
     throw Invalid_input("evenly spaced streamlines: the separation is too small for the surface (about " +
-                        std::to_string(expected_lines) + " streamlines would fill it, at most 1e7)");
+                        short_number(expected_lines) + " streamlines would fill it, at most 1e7)");
   const double test_distance = o.test_ratio * separation;
   const double sample_step = test_distance / 2;
   const double seed_distance = 0.9 * separation;

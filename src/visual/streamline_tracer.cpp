@@ -68,7 +68,7 @@ std::vector<Streamline> fur_strokes(const internal::Streamline_walker& walker, c
       throw Invalid_input("fur: give number_of_strokes or a positive finite density");
     const double expected = o.density * walker.total_area;
     if(!(expected <= max_strokes))
-      throw Invalid_input("fur: the density gives " + std::to_string(expected) + " strokes, more than 1e7");
+      throw Invalid_input("fur: the density gives " + internal::short_number(expected) + " strokes, more than 1e7");
     count = static_cast<long>(std::llround(expected));
   }
   if(count > max_strokes)

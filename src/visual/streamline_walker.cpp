@@ -9,6 +9,8 @@
 
 #include <CGAL/Tangent_vector_fields/errors.h>
 
+#include <iomanip>
+#include <sstream>
 #include <string>
 #include <utility>
 
@@ -485,6 +487,13 @@ Position Streamline_walker::start_position(int face, const Barycentric& beta, in
     }
   pos.point = point_of(face, pos.beta);
   return pos;
+}
+
+std::string short_number(double x)
+{
+  std::ostringstream s;
+  s << std::setprecision(3) << x;
+  return s.str();
 }
 
 void check_streamline_options(const Streamline_options& o)
