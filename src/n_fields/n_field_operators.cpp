@@ -430,6 +430,11 @@ const N_field_operators::Matrix& N_field_operators::kernel() const
 
 N_field_operators::Vector N_field_operators::from_vectors(const Vector& vectors) const
 {
+  if(vectors.size() != 2 * mesh().number_of_faces())
+    throw Invalid_input("n-field: " + std::to_string(vectors.size()) + " frame coordinates for a mesh of " +
+                        std::to_string(mesh().number_of_faces()) + " faces");
+  // hypot(NaN, b) > 0 is false: a NaN vector would silently become the zero n-field.
+  if(!vectors.allFinite()) throw Invalid_input("n-field: the vectors have non-finite entries");
   const Eigen::Index nf = vectors.size() / 2;
   Vector z(vectors.size());
   for(Eigen::Index f = 0; f < nf; ++f)

@@ -87,6 +87,7 @@ struct Problem
 
   // Gershgorin bound of the largest eigenvalue of the standard form D^-1/2 A D^-1/2.
   double largest_eigenvalue_bound = 0;
+  Sparse_matrix abs_A; // |A|, for the roundoff of A x
 
   Problem(const Sparse_matrix& A_, const Eigen::VectorXd& d_, const Eigen::MatrixXd& kernel_original) : A(A_), d(d_)
   {
@@ -95,6 +96,7 @@ struct Problem
       for(Sparse_matrix::InnerIterator it(A, j); it; ++it)
         row_sums[it.row()] += std::abs(it.value()) / std::sqrt(d[it.row()] * d[j]);
     largest_eigenvalue_bound = row_sums.size() ? row_sums.maxCoeff() : 0.;
+    abs_A = A.cwiseAbs();
     sqrt_d = d.cwiseSqrt();
     inv_sqrt_d = sqrt_d.cwiseInverse();
     if(kernel_original.cols() > 0) kernel = orthonormal_columns(sqrt_d.asDiagonal() * kernel_original);
@@ -107,6 +109,21 @@ struct Problem
   double tolerance_for(double lambda, double tolerance) const
   {
     return std::max(tolerance, 64 * std::numeric_limits<double>::epsilon() * largest_eigenvalue_bound / std::abs(lambda));
+  }
+  // The same bound for each pair from its own vector: the roundoff of computing A x is
+  // eps |A| |x| entry by entry, in the norm of `residuals`.  Where A's large entries sit
+  // away from the vector -- a component of the mesh a million times smaller than the one
+  // the vector lives on -- it is far below `tolerance_for`, which would accept a pair that
+  // has only a few correct digits.  Vectors with roundoff on such entries (from a dense
+  // eigensolver) have a residual above this bound.
+  Eigen::VectorXd tolerances_for(const Eigen::VectorXd& values, const Eigen::MatrixXd& X, double tolerance) const
+  {
+    const Eigen::MatrixXd AX = abs_A * X.cwiseAbs();
+    Eigen::VectorXd t(values.size());
+    for(Eigen::Index i = 0; i < values.size(); ++i)
+      t[i] = std::max(tolerance, 64 * std::numeric_limits<double>::epsilon() * inv_sqrt_d.cwiseProduct(AX.col(i)).norm() /
+                                     (std::abs(values[i]) * sqrt_d.cwiseProduct(X.col(i)).norm()));
+    return t;
   }
   void deflate(Eigen::MatrixXd& Z) const
   {
@@ -126,7 +143,8 @@ struct Problem
   }
 };
 
-Eigenpairs dense_eigenpairs(const Problem& p, int count)
+// `subspace`, if given, receives the standard-form vectors of all the values returned.
+Eigenpairs dense_eigenpairs(const Problem& p, int count, Eigen::MatrixXd* subspace = nullptr)
 {
   const Eigen::Index n = p.sqrt_d.size(), c = p.kernel.cols();
   Eigen::MatrixXd B = p.inv_sqrt_d.asDiagonal() * Eigen::MatrixXd(p.A) * p.inv_sqrt_d.asDiagonal();
@@ -150,7 +168,43 @@ Eigenpairs dense_eigenpairs(const Problem& p, int count)
   result.vectors = p.inv_sqrt_d.asDiagonal() * Y;
   result.residuals = p.residuals(result.values.head(count), result.vectors);
   result.basis_size = static_cast<int>(n - c);
+  if(subspace) *subspace = c > 0 ? Eigen::MatrixXd(basis * B.leftCols(shown)) : Eigen::MatrixXd(B.leftCols(shown));
   return result;
+}
+
+// Subspace inverse iteration with Rayleigh-Ritz on the dense pairs (all `vectors` columns,
+// a few more than `count`), until the `count` lowest meet `accurate`.  The dense solver's
+// roundoff on the entries of the largest eigenvalues (a component far smaller than the
+// others) is damped by lambda / lambda_max per step, and the sparse products and solves do
+// not spread it back over the entries; the wanted pairs converge at the ratio of their
+// eigenvalue to that of the first pair beyond the subspace.
+template <class Accurate>
+void purify(const Sparse_matrix& A, const Problem& p, Eigenpairs& result, int count, const Accurate& accurate)
+{
+  // Below the spectrum (A is semi-definite, D positive), near its bottom.
+  const double shift = std::max(1e-3 * std::abs(result.values[0]), std::numeric_limits<double>::min());
+  Sparse_matrix K = A;
+  K.diagonal() += shift * p.d;
+  Sparse_ldlt_solver solver;
+  solver.analyze(K);
+  solver.factor(K, "the eigenproblem shifted below its spectrum");
+  Eigen::MatrixXd X = result.vectors;
+  for(int step = 0; step < 60; ++step)
+  {
+    Eigen::MatrixXd Z = p.sqrt_d.asDiagonal() * solver.solve(Eigen::MatrixXd(p.d.asDiagonal() * X));
+    p.deflate(Z);
+    X = p.inv_sqrt_d.asDiagonal() * orthonormal_columns(Z);
+    Eigen::MatrixXd a = X.transpose() * (A * X), m = X.transpose() * p.d.asDiagonal() * X;
+    a = (a + a.transpose()).eval() / 2;
+    m = (m + m.transpose()).eval() / 2;
+    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> small(a, m);
+    if(small.info() != Eigen::Success) throw Numerical_failure("eigenproblem: the Rayleigh-Ritz step failed");
+    X = X * small.eigenvectors();
+    result.values.head(X.cols()) = small.eigenvalues();
+    result.vectors = X.leftCols(count);
+    result.residuals = p.residuals(result.values.head(count), result.vectors);
+    if(step >= 1 && accurate()) return;
+  }
 }
 
 // ---------------------------------------------------------------------------
@@ -209,7 +263,11 @@ void lanczos_window(const Problem& p, const Sparse_matrix& K, const Sparse_ldlt_
 
   Eigen::MatrixXd Q(n, max_basis + b);
   Eigen::MatrixXd H = Eigen::MatrixXd::Zero(max_basis + b, max_basis + b);
-  Q.leftCols(b) = orthonormal_columns(random_block(b));
+  // The start block through the operator twice: a random vector has O(1) parts along the
+  // largest eigenvalues, and a Ritz vector keeps some of its start block; where those parts
+  // are amplified by 1e13 (a component a million times smaller) they would keep every
+  // residual near 1.  Shift-and-invert damps them by sigma / lambda per application.
+  Q.leftCols(b) = orthonormal_columns(op(orthonormal_columns(op(random_block(b)))));
   int m = b, complete = 0;
   int next_check = std::min(max_basis, std::max(2 * b, wanted + wanted / 2));
   double estimate_factor = 0.5; // standard-form residual <= factor * tol (the estimate is exact up to roundoff)
@@ -298,15 +356,16 @@ void lanczos_window(const Problem& p, const Sparse_matrix& K, const Sparse_ldlt_
         values[i] = sigma + 1 / theta[all[i]];
       }
       const Eigen::MatrixXd Y = Q.leftCols(complete) * S;
-      const Eigen::VectorXd residuals = p.residuals(values, p.inv_sqrt_d.asDiagonal() * Y);
+      const Eigen::MatrixXd X = p.inv_sqrt_d.asDiagonal() * Y;
+      const Eigen::VectorXd residuals = p.residuals(values, X);
+      const Eigen::VectorXd tolerances = p.tolerances_for(values, X, options.tolerance);
       bool window_ok = true;
-      for(std::size_t i = 0; i < in_window.size(); ++i)
-        window_ok = window_ok && residuals[i] <= p.tolerance_for(values[i], options.tolerance);
+      for(std::size_t i = 0; i < in_window.size(); ++i) window_ok = window_ok && residuals[i] <= tolerances[i];
       if(window_ok)
       {
         for(std::size_t i = 0; i < all.size(); ++i)
         {
-          if(i >= in_window.size() && !(residuals[i] <= p.tolerance_for(values[i], options.tolerance)))
+          if(i >= in_window.size() && !(residuals[i] <= tolerances[i]))
             continue; // carry only if accurate
           Ritz_set& target = i < in_window.size() ? window : carry;
           target.values.push_back(values[i]);
@@ -315,7 +374,9 @@ void lanczos_window(const Problem& p, const Sparse_matrix& K, const Sparse_ldlt_
         basis_used = std::max(basis_used, complete);
         return;
       }
-      estimate_factor *= 1e-2; // the estimate was optimistic: ask for more
+      // The estimate was optimistic: ask for more, down to what it can tell (its roundoff is
+      // that of `tolerance_for`, far above the true residual a pair may need to reach).
+      estimate_factor = std::max(estimate_factor * 1e-2, 1e-6);
     }
     if(exhausted)
     {
@@ -475,8 +536,9 @@ Eigenpairs sliced_eigenpairs(const Sparse_matrix& A, const Problem& p, int count
   result.operator_applications = applications;
   result.completeness = check;
   result.complete_below = static_cast<int>(found.values.size()) > count ? found.values[order[count]] : lo;
+  const Eigen::VectorXd tolerances = p.tolerances_for(result.values, result.vectors, options.tolerance);
   for(int i = 0; i < count; ++i)
-    if(!(result.residuals[i] <= p.tolerance_for(result.values[i], options.tolerance)))
+    if(!(result.residuals[i] <= tolerances[i]))
       throw Numerical_failure("spectrum slicing: an eigenpair misses the tolerance (residual " +
                               std::to_string(result.residuals[i]) + ")");
   return result;
@@ -547,7 +609,25 @@ Eigenpairs lowest_eigenpairs(const Sparse_matrix& A, const Eigen::VectorXd& d, i
   const bool dense =
       options.allow_dense && (n <= options.dense_size || count + 3 * options.block_size > (n - c) / 3);
   if(!dense) return sliced_eigenpairs(A, p, count, options);
-  Eigenpairs result = dense_eigenpairs(p, count);
+  Eigen::MatrixXd subspace;
+  Eigenpairs result = dense_eigenpairs(p, count, &subspace);
+  // A dense eigensolver leaves roundoff of size eps |x| on every entry, which the largest
+  // eigenvalues amplify: with a spectrum spread over many orders (components of very
+  // different sizes) the low pairs keep only a few digits.  Inverse iteration cleans them.
+  auto accurate = [&] {
+    const Eigen::VectorXd tolerances = p.tolerances_for(result.values.head(count), result.vectors, options.tolerance);
+    for(int i = 0; i < count; ++i)
+      if(!(result.residuals[i] <= tolerances[i])) return false;
+    return true;
+  };
+  if(!accurate())
+  {
+    result.vectors = p.inv_sqrt_d.asDiagonal() * subspace;
+    purify(A, p, result, count, accurate);
+    if(!accurate())
+      throw Numerical_failure("eigenproblem: an eigenpair misses the tolerance after refinement (residual " +
+                              std::to_string(result.residuals.maxCoeff()) + ")");
+  }
   // Complete by construction; the inertia count is recorded all the same.
   if(count < n - c) result.completeness = check_completeness(A, d, result.values, c, count);
   result.values.conservativeResize(count);

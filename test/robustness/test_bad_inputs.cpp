@@ -31,7 +31,7 @@ Field field_map(Mesh& mesh, const std::string& name, const Vector_3& value = Vec
 // The basis is right for the topology counted on the mesh: harmonic count 2g + b - 1
 // per component with boundary (2g closed), eigenvalues finite, >= 0 and ascending,
 // eigenfields finite and MX-orthonormal.
-void expect_sound_basis(const Basis& basis, int expected_harmonic)
+void expect_sound_basis(const Basis& basis, int expected_harmonic, double max_residual = 1e-8)
 {
   const TVF::Eigenfield_basis& b = basis.basis();
   EXPECT_EQ(b.number_of_harmonic(), expected_harmonic);
@@ -47,7 +47,7 @@ void expect_sound_basis(const Basis& basis, int expected_harmonic)
   const Eigen::VectorXd& mx = basis.operators().shared_matrices()->field_masses();
   const Eigen::MatrixXd gram = U.transpose() * mx.asDiagonal() * U;
   EXPECT_LT((gram - Eigen::MatrixXd::Identity(b.size(), b.size())).cwiseAbs().maxCoeff(), 1e-8);
-  EXPECT_LT(b.report().max_residual, 1e-8);
+  EXPECT_LT(b.report().max_residual, max_residual);
 }
 
 // Harmonic dimension from the counts made by the test (one component).
@@ -115,12 +115,13 @@ TEST(BadBasis, RequestsOfImpossibleSizeAreRefused)
 
 TEST(BadBasis, EmptyRequestsGiveAnEmptyBasisThatStillTransforms)
 {
-  // Size 0 (and every eigenvalue below a negative bound): a valid empty basis; a field is
-  // all rest, and filtering keeps exactly the rest factor times it.
+  // Size 0: a valid empty basis; a field is all rest, and filtering keeps exactly the rest
+  // factor times it.  A negative eigenvalue bound is no request at all.
   Mesh mesh = make_icosphere(1);
-  for(const Basis& basis : {Basis(mesh, TVF::parameters::number_of_eigenfields(0)),
-                            Basis(mesh, TVF::parameters::maximum_eigenvalue(-1.))})
+  expect_error<TVF::Invalid_input>([&] { Basis b(mesh, TVF::parameters::maximum_eigenvalue(-1.)); },
+                                   "must be finite and non-negative");
   {
+    const Basis basis(mesh, TVF::parameters::number_of_eigenfields(0));
     EXPECT_EQ(basis.size(), 0);
     const Eigen::VectorXd v = random_field(mesh.number_of_faces(), 3);
     EXPECT_EQ(basis.basis().coefficients(v).size(), 0);
@@ -142,6 +143,7 @@ TEST(BadBasis, AwkwardTopologiesGiveTheHarmonicCountOfTheirTopology)
   EXPECT_EQ(harmonic_of(slab), 6);
   for(const Mesh* mesh : {&band, &strip, &slab})
   {
+    SCOPED_TRACE(mesh->number_of_faces());
     const int h = harmonic_of(*mesh);
     const Basis basis(*mesh, TVF::parameters::number_of_eigenfields(h + 10));
     expect_sound_basis(basis, h);
@@ -163,7 +165,8 @@ TEST(BadBasis, NeedlesCapsAndLonelyVerticesGiveAccurateBases)
   mesh.point(b) = mesh.point(a) + 1e-7 * (mesh.point(b) - mesh.point(a));
   const Vertex_index lonely = mesh.add_vertex(Point_3(9, 9, 9));
   const Basis basis(mesh, TVF::parameters::number_of_eigenfields(20));
-  expect_sound_basis(basis, 0);
+  // Cotangents of 1e7 at the needle: the residual's roundoff floor is eps 1e7 / lambda.
+  expect_sound_basis(basis, 0, 1e-6);
   EXPECT_EQ(basis.basis().exact_eigenfunctions().row(static_cast<int>(lonely)).norm(), 0.);
 }
 

@@ -149,6 +149,7 @@ public:
   const Matrix& kernel() const;
 
   /// The n-field of vectors (frame coordinates, `2nf`): `z_f = |u_f| (u_f / |u_f|)^n`.
+  /// \throws Invalid_input for another size or non-finite entries.
   Vector from_vectors(const Vector& vectors) const;
   /// The first of the n vectors of each face (angle `arg(z_f) / n` in `(-pi/n, pi/n]`, length `|z_f|`).
   Vector to_vectors(const Vector& z) const;
