@@ -10,6 +10,7 @@
 
 #include <CGAL/Tangent_vector_fields/Full_spline_solver.h>
 #include <CGAL/Tangent_vector_fields/Reduced_spline_solver.h>
+#include <CGAL/Tangent_vector_fields/Refining_spline_solver.h>
 #include <CGAL/Tangent_vector_fields/Soft_field_design.h>
 #include <CGAL/Tangent_vector_fields/Vector_field_spline.h>
 
@@ -308,4 +309,50 @@ TEST(BadDesign, AwkwardButValidMeshesMeetTheirConstraints)
     // The first constraint is a vector: it fixes two harmonic directions, the others none.
     EXPECT_EQ(solver.report().undetermined_harmonic, std::max(0, c.harmonic - 2));
   }
+}
+
+TEST(BadDesign, RefiningSolverRefusesMismatchedSolversAndBadEditsAndRefinesOnMultiScaleMeshes)
+{
+  // A sphere with a companion 1e-6 as large: the reduced answer at once, then the exact one,
+  // both meeting the constraints; bad edits change neither.
+  const Mesh pair = sphere_with_tiny_companion(1e-6);
+  const TVF::Spectral_basis<Mesh> basis(pair, TVF::parameters::number_of_eigenfields(60));
+  Full_setup s(pair);
+  auto reduced = [&](double omega) {
+    TVF::Spline_options o;
+    o.omega = omega;
+    return std::make_unique<TVF::Reduced_spline_solver>(basis.shared_basis(), 0, o);
+  };
+  auto full = [&](double omega) {
+    TVF::Spline_options o;
+    o.omega = omega;
+    return std::make_unique<TVF::Full_spline_solver>(s.hodge, o);
+  };
+  expect_error<TVF::Invalid_input>([&] { TVF::Refining_spline_solver r(nullptr, full(0)); },
+                                   "both a reduced and a full solver are needed");
+  expect_error<TVF::Invalid_input>([&] { TVF::Refining_spline_solver r(reduced(0), full(1)); }, "different tensions");
+  auto used = full(0);
+  used->add(Constraint::vector_in_face(0, {1, 0, 0}));
+  expect_error<TVF::Invalid_input>([&] { TVF::Refining_spline_solver r(reduced(0), std::move(used)); },
+                                   "must start without constraints");
+
+  TVF::Refining_spline_solver solver(reduced(0), full(0));
+  const std::vector<Constraint> cs = {Constraint::vector_in_face(3, {0, 1, 0}), Constraint::vector_in_face(100, {1, 0, 0})};
+  solver.add(cs);
+  // The lowest 60 eigenfields all live on the big sphere (the small one's eigenvalues are
+  // 1e12 larger): the basis cannot represent a vector on the small sphere.
+  expect_error<TVF::Infeasible_constraints>([&] { solver.add(Constraint::vector_in_face(327, {1, 0, 0})); },
+                                            "in face 327");
+  expect_error<TVF::Invalid_input>([&] { solver.add(Constraint::vector_in_face(400, {1, 0, 0})); }, "out of range");
+  expect_error<TVF::Invalid_input>([&] { solver.set_omega(std::nan("")); }, "omega");
+  EXPECT_EQ(solver.number_of_constraints(), 2);
+  TVF::Spline_answer answer;
+  const Eigen::VectorXd quick = solver.field(&answer);
+  EXPECT_FALSE(answer.exact);
+  ASSERT_TRUE(quick.allFinite());
+  solver.refine();
+  const Eigen::VectorXd exact = solver.field(&answer);
+  EXPECT_TRUE(answer.exact);
+  ASSERT_TRUE(exact.allFinite());
+  EXPECT_LT(residual(*s.ops, cs, exact), 1e-8);
 }

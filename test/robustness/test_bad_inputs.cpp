@@ -204,6 +204,18 @@ TEST(BadBasis, BadFieldsAndArgumentsOfTransformsAreRefused)
   EXPECT_DOUBLE_EQ(none.relative_errors[1], 1.);
   fields(3, 1) = std::nan("");
   expect_error<TVF::Invalid_input>([&] { b.compress(fields, 4); }, "non-finite");
+  // A field with a large normal component: the basis sees its tangent part only.
+  Field tangent = field_map(mesh, "tangent"), lifted = field_map(mesh, "lifted");
+  for(Face_index f : mesh.faces())
+  {
+    const auto& n = basis.operators().intrinsic_mesh().normal(static_cast<int>(f));
+    const Vector_3 normal(n[0], n[1], n[2]), w(1, 2, 3);
+    tangent[f] = w - (w * normal) * normal;
+    lifted[f] = tangent[f] + 50 * normal;
+  }
+  const Eigen::VectorXd ct = basis.coefficients(tangent), cl = basis.coefficients(lifted);
+  EXPECT_LT((ct - cl).norm(), 1e-12 * ct.norm());
+  EXPECT_GT(ct.norm(), 0.);
   // A field map with a NaN vector, through the generic interface: the output is untouched.
   Field in = field_map(mesh, "in", Vector_3(1, 0, 0)), out = field_map(mesh, "out", Vector_3(7, 7, 7));
   in[Face_index(4)] = Vector_3(0, std::nan(""), 0);
