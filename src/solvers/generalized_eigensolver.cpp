@@ -263,11 +263,7 @@ void lanczos_window(const Problem& p, const Sparse_matrix& K, const Sparse_ldlt_
 
   Eigen::MatrixXd Q(n, max_basis + b);
   Eigen::MatrixXd H = Eigen::MatrixXd::Zero(max_basis + b, max_basis + b);
-  // The start block through the operator twice: a random vector has O(1) parts along the
-  // largest eigenvalues, and a Ritz vector keeps some of its start block; where those parts
-  // are amplified by 1e13 (a component a million times smaller) they would keep every
-  // residual near 1.  Shift-and-invert damps them by sigma / lambda per application.
-  Q.leftCols(b) = orthonormal_columns(op(orthonormal_columns(op(random_block(b)))));
+  Q.leftCols(b) = orthonormal_columns(random_block(b));
   int m = b, complete = 0;
   int next_check = std::min(max_basis, std::max(2 * b, wanted + wanted / 2));
   double estimate_factor = 0.5; // standard-form residual <= factor * tol (the estimate is exact up to roundoff)
@@ -374,9 +370,7 @@ void lanczos_window(const Problem& p, const Sparse_matrix& K, const Sparse_ldlt_
         basis_used = std::max(basis_used, complete);
         return;
       }
-      // The estimate was optimistic: ask for more, down to what it can tell (its roundoff is
-      // that of `tolerance_for`, far above the true residual a pair may need to reach).
-      estimate_factor = std::max(estimate_factor * 1e-2, 1e-6);
+      estimate_factor *= 1e-2; // the estimate was optimistic: ask for more
     }
     if(exhausted)
     {
