@@ -10,7 +10,10 @@
 //   reduced soft: factor (solver + 30 constraints) and solve;
 //   full soft:    factor and solve;   full TVFS: factor, pull-backs, solve;
 // and the error of the reduced TVFS against the full one: relative L2(MX) error,
-// median angle between face vectors, constraint residual, energy ratio.
+// median angle between face vectors, constraint residual, energy ratio (also for a smooth
+// constraint set, with and without its constraints near a boundary).  Then exact answers:
+// the timeline of one constraint add with Refining_spline_solver (reduced field ready,
+// exact field ready, exact value edits), whose exact point ends each error-time curve.
 //
 // Usage: bench_design [data-dir] [--meshes rocker,bunny,armadillo] [--sizes 50,100,...]
 //                     [--cache DIR] (saves / loads bases there)
@@ -25,6 +28,7 @@
 #include <CGAL/Tangent_vector_fields/Eigenfield_basis.h>
 #include <CGAL/Tangent_vector_fields/Full_spline_solver.h>
 #include <CGAL/Tangent_vector_fields/Reduced_spline_solver.h>
+#include <CGAL/Tangent_vector_fields/Refining_spline_solver.h>
 #include <CGAL/Tangent_vector_fields/Soft_field_design.h>
 #include <CGAL/Tangent_vector_fields/constraint_file_io.h>
 #include <CGAL/Tangent_vector_fields/svg_chart.h>
@@ -111,6 +115,40 @@ std::vector<TVF::Field_constraint> smooth_constraints(const TVF::Intrinsic_mesh&
   return out;
 }
 
+// The constraints whose face centroid is farther than `distance` from every boundary edge.
+std::vector<TVF::Field_constraint> away_from_boundary(const TVF::Intrinsic_mesh& m,
+                                                      const std::vector<TVF::Field_constraint>& constraints,
+                                                      double distance)
+{
+  auto midpoint = [&](int a, int b, int k) { return 0.5 * (m.position(a)[k] + m.position(b)[k]); };
+  std::vector<std::array<double, 3>> boundary;
+  for(int e = 0; e < m.number_of_edges(); ++e)
+    if(m.is_boundary_edge(e))
+    {
+      const auto& v = m.edge_vertices(e);
+      boundary.push_back({{midpoint(v[0], v[1], 0), midpoint(v[0], v[1], 1), midpoint(v[0], v[1], 2)}});
+    }
+  std::vector<TVF::Field_constraint> out;
+  for(const auto& c : constraints)
+  {
+    std::array<double, 3> p{{0, 0, 0}};
+    for(int k = 0; k < 3; ++k)
+      for(int i = 0; i < 3; ++i) p[i] += m.position(m.face_vertices(c.face)[k])[i] / 3;
+    double nearest = HUGE_VAL;
+    for(const auto& b : boundary) nearest = std::min(nearest, std::hypot(p[0] - b[0], p[1] - b[1], p[2] - b[2]));
+    if(nearest > distance) out.push_back(c);
+  }
+  return out;
+}
+
+double bounding_box_diagonal(const TVF::Intrinsic_mesh& m)
+{
+  std::array<double, 3> lo{{HUGE_VAL, HUGE_VAL, HUGE_VAL}}, hi{{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL}};
+  for(int v = 0; v < m.number_of_vertices(); ++v)
+    for(int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], m.position(v)[k]), hi[k] = std::max(hi[k], m.position(v)[k]);
+  return std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+}
+
 double relative_mx_error(const Eigen::VectorXd& masses, const Eigen::VectorXd& x, const Eigen::VectorXd& ref)
 {
   const Eigen::VectorXd d = x - ref;
@@ -144,7 +182,7 @@ int main(int argc, char** argv)
 {
   std::string dir = TVF_SHARED_DATA_DIR, which = "rocker,bunny,armadillo", cache, chart_file, write_dir;
   TVF::Line_chart chart;
-  chart.title = "Reduced TVFS: error against the full spline vs. time of a constraint add (d = 100 ... 2000)";
+  chart.title = "TVFS: error against the full spline vs. time of a constraint add (d = 100 ... 2000; last point: exact)";
   chart.x_label = "constraint add + solve [s]";
   chart.y_label = "relative L2(MX) error vs full";
   std::vector<int> sizes = {50, 100, 200, 500, 1000, 2000};
@@ -202,6 +240,10 @@ int main(int argc, char** argv)
       if(!path.empty()) basis->save(path);
     }
     const double basis_seconds = seconds_since(start);
+    // The same basis with float32 eigenfunctions: reconstruction time and the error it adds.
+    auto basis32 = std::make_shared<TVF::Eigenfield_basis>(*basis);
+    basis32->set_precision(TVF::Eigenfunction_precision::float32);
+    std::vector<std::string> float_rows;
     const auto constraints = table_constraints(ops.mesh(), 7);
     const auto smooth = smooth_constraints(ops.mesh(), 5);
     const TVF::Field_constraint extra =
@@ -230,9 +272,21 @@ int main(int argc, char** argv)
     for(const auto& c : constraints) full_soft.add(c);
     full_soft.field();
     const double full_soft_total = seconds_since(start);
+    start = Clock::now();
+    const int soft_extra = full_soft.add(extra);
+    full_soft.field();
+    const double full_soft_add = seconds_since(start);
+    full_soft.remove(soft_extra);
     TVF::Full_spline_solver full_smooth(hodge);
     full_smooth.add(smooth);
     const Eigen::VectorXd full_smooth_field = full_smooth.field();
+    // The smooth set without the constraints near a boundary (within 2% of the diagonal):
+    // the eigenfields are tangent to the boundary, so a constraint crossing it close by is
+    // met only through eigenfields far above any affordable d.
+    const auto smooth_away = away_from_boundary(ops.mesh(), smooth, 0.02 * bounding_box_diagonal(ops.mesh()));
+    TVF::Full_spline_solver full_away(hodge);
+    full_away.add(smooth_away);
+    const Eigen::VectorXd full_away_field = full_away.field();
 
     std::printf("== %s: %d faces, %d harmonic fields; basis of %d: %.1f s (%s)\n", s.key.c_str(), faces,
                 hodge->harmonic_dimension(), basis->size(), basis_seconds, loaded ? "loaded" : "computed");
@@ -240,8 +294,10 @@ int main(int argc, char** argv)
                 " (second-order residual %.1e), total %.2f s; add 1 constraint %.3f s; value edit %.1f ms\n",
                 full.statistics().factor_seconds, full.statistics().pull_back_seconds, full.statistics().residual,
                 full_total, full_add, 1e3 * full_edit);
-    std::printf("full soft: factor %.2f s, solve %.2f s, total %.2f s (CG residual %.1e)\n\n",
-                full_soft.factor_seconds(), full_soft.solve_seconds(), full_soft_total, full_soft.residual());
+    std::printf("full soft: factor %.2f s (W, W*), 54 pull-backs %.2f s, solve %.3f s, total %.2f s (second-order"
+                " residual %.1e); add 1 constraint %.3f s\n\n",
+                full_soft.factor_seconds(), full_soft.pull_back_seconds(), full_soft.solve_seconds(), full_soft_total,
+                full_soft.residual(), full_soft_add);
     std::printf("%6s | %9s %9s %9s %9s %8s | %9s %9s | %9s %8s %9s %9s %9s | %9s\n", "d", "setup", "edit", "add",
                 "reconstr", "GB/s", "soft fac", "soft sol", "rel L2", "med deg", "c. resid", "E ratio", "speed-up",
                 "full/red");
@@ -298,6 +354,19 @@ int main(int argc, char** argv)
         (basis->type(k) == TVF::Eigenfield_type::exact ? exact : coexact) += basis->type(k) != TVF::Eigenfield_type::harmonic;
       const double bytes = 8.0 * (double(exact) * ops.mesh().number_of_vertices() +
                                   double(coexact) * ops.mesh().number_of_interior_edges());
+      {
+        TVF::Reduced_spline_solver reduced32(basis32, d);
+        reduced32.add(constraints);
+        reduced32.coefficients();
+        start = Clock::now();
+        const Eigen::VectorXd field32 = reduced32.field();
+        const double seconds32 = seconds_since(start);
+        char line[200];
+        std::snprintf(line, sizeof line, "%6d | %9.2f %8.2f | %9.2f %8.2f | %9.1e | %9.2e\n", d, 1e3 * reconstruction,
+                      bytes / reconstruction / 1e9, 1e3 * seconds32, bytes / 2 / seconds32 / 1e9,
+                      relative_mx_error(masses, field32, field), relative_mx_error(masses, field, full_field));
+        float_rows.push_back(line);
+      }
       // Reduced soft design.
       start = Clock::now();
       TVF::Reduced_soft_design soft(basis, d);
@@ -330,10 +399,14 @@ int main(int argc, char** argv)
         const Eigen::VectorXd x = reduced_smooth.field();
         smooth_series.x.push_back(add); // the add time measured on the random set at this d
         smooth_series.y.push_back(relative_mx_error(masses, x, full_smooth_field));
+        TVF::Reduced_spline_solver reduced_away(basis, d);
+        reduced_away.add(smooth_away);
         char line[256];
-        std::snprintf(line, sizeof line, "%6d | %9.2e %8.3f %9.1e %9.4f\n", d, relative_mx_error(masses, x, full_smooth_field),
-                      median_angle_degrees(x, full_smooth_field), reduced_smooth.report().constraint_residual,
-                      reduced_smooth.report().energy / full_smooth.report().energy);
+        std::snprintf(line, sizeof line, "%6d | %9.2e %8.3f %9.1e %9.4f | %9.2e\n", d,
+                      relative_mx_error(masses, x, full_smooth_field), median_angle_degrees(x, full_smooth_field),
+                      reduced_smooth.report().constraint_residual,
+                      reduced_smooth.report().energy / full_smooth.report().energy,
+                      relative_mx_error(masses, reduced_away.field(), full_away_field));
         smooth_rows.push_back(line);
       }
       catch(const TVF::Infeasible_constraints&)
@@ -341,9 +414,79 @@ int main(int argc, char** argv)
         smooth_rows.push_back(std::to_string(d) + " | refused (basis too small)\n");
       }
     }
-    std::printf("\nsmooth constraint set (30 vectors from a smooth ambient field), reduced TVFS against full:\n"
-                "%6s | %9s %8s %9s %9s\n", "d", "rel L2", "med deg", "c. resid", "E ratio");
+    std::printf("\nsmooth constraint set (30 vectors from a smooth ambient field), reduced TVFS against full;\n"
+                "away: the %d of them farther than 2%% of the bounding-box diagonal from every boundary edge:\n"
+                "%6s | %9s %8s %9s %9s | %9s\n", static_cast<int>(smooth_away.size()), "d", "rel L2", "med deg", "c. resid",
+                "E ratio", "away");
     for(const std::string& line : smooth_rows) std::printf("%s", line.c_str());
+    std::printf("\nreconstruction of the reduced field with eigenfunctions in double and in float32 (%.2f GB and %.2f GB);\n"
+                "f32 error: float32 against double reconstruction; reduction error: double against the full spline:\n"
+                "%6s | %9s %8s | %9s %8s | %9s | %9s\n", basis->memory_bytes() / 1e9, basis32->memory_bytes() / 1e9, "d",
+                "f64 ms", "GB/s", "f32 ms", "GB/s", "f32 error", "reduction");
+    for(const std::string& line : float_rows) std::printf("%s", line.c_str());
+
+    // Exact answers: the timeline of one vector constraint added to the 30 with a basis of
+    // d = 1000 (or the largest below) and the full solver refining it (Refining_spline_solver).
+    int dt = 0;
+    for(int d : sizes)
+      if(d <= std::min(1000, basis->size())) dt = std::max(dt, d);
+    if(dt > 0)
+    {
+      TVF::Refining_spline_solver refining(std::make_unique<TVF::Reduced_spline_solver>(basis, dt),
+                                           std::make_unique<TVF::Full_spline_solver>(hodge));
+      refining.add(constraints);
+      refining.refine();
+      refining.field();
+      std::vector<double> reduced_ready, exact_ready, edit_exact, drag_exact;
+      double exact_error = 0;
+      bool all_exact = true;
+      for(int i = 0; i < 5; ++i)
+      {
+        const int f = (faces / 2 + 7919 * i) % faces;
+        auto c = TVF::Field_constraint::vector_in_face(f, ops.mesh().from_frame(f, 0.6, -0.8));
+        start = Clock::now();
+        const TVF::Constraint_id id = refining.add(c);
+        refining.field();
+        reduced_ready.push_back(seconds_since(start));
+        refining.refine();
+        const Eigen::VectorXd exact_field = refining.field();
+        exact_ready.push_back(seconds_since(start));
+        if(i == 0) // against the one-shot full spline of the 31 constraints
+        {
+          full.add(c);
+          exact_error = relative_mx_error(masses, exact_field, full.field());
+          full.remove(full.constraint_ids().back());
+        }
+        c.vector = ops.mesh().from_frame(f, -0.8, 0.6);
+        start = Clock::now();
+        refining.change(id, c);
+        refining.field();
+        edit_exact.push_back(seconds_since(start));
+        refining.field_after_value_edit(id); // the responses to this constraint's values, once
+        start = Clock::now();
+        for(int k = 0; k < 10; ++k)
+        {
+          c.vector = ops.mesh().from_frame(f, std::cos(k), std::sin(k));
+          refining.change(id, c);
+          refining.field_after_value_edit(id);
+        }
+        drag_exact.push_back(seconds_since(start) / 10);
+        all_exact = all_exact && refining.is_exact();
+        refining.remove(id);
+      }
+      auto median = [](std::vector<double> v) {
+        std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+        return v[v.size() / 2];
+      };
+      std::printf("\nexact answers, one vector constraint added to the 30 (reduced d = %d refined by the full solver;"
+                  " medians of 5 adds):\n  reduced field ready %.2f ms | exact field ready %.1f ms (error against the"
+                  " one-shot full spline %.1e) | value edit, exact: %.1f ms (field), %.2f ms per drag step"
+                  " (field_after_value_edit)%s\n",
+                  dt, 1e3 * median(reduced_ready), 1e3 * median(exact_ready), exact_error, 1e3 * median(edit_exact),
+                  1e3 * median(drag_exact), all_exact ? "" : "  [NOT EXACT after the edits]");
+      random_series.x.push_back(median(exact_ready)); // the curve's exact endpoint
+      random_series.y.push_back(exact_error);
+    }
     chart.series.push_back(random_series);
     chart.series.push_back(smooth_series);
     std::printf("speed-up = full TVFS constraint add (1 pull-back with the factor kept) / reduced constraint add;\n"

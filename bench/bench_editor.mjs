@@ -199,6 +199,7 @@ async function main() {
       const log = () => page.evaluate(() => window.tvfEditor.latencyLog());
       const change = (c) => page.evaluate(([id, c]) => window.tvfEditor.request({ type: 'change', id, constraint: c }),
         [vector.id, c]);
+      const rows = [];
       for (const d of sizes) {
         await page.evaluate((d) => window.tvfEditor.request({ type: 'set_basis_size', size: d }), d);
         await waitExact();
@@ -222,9 +223,29 @@ async function main() {
           const e = (await log()).filter((x) => x.type === 'change').at(-1);
           if (k > 0 && (await exactNow())) valueEdits.push(e.total_ms);
         }
+        // A constraint added (a click with the vector tool) and removed again.
+        const addFirst = [], addExact = [], addServer = [];
+        for (let k = 0; k < 3; ++k) {
+          const face = (vector.constraint.face + 7919 * (k + 1)) % faces;
+          const c = { type: 'vector', face, vector: await tangentIn(face) };
+          await page.evaluate((c) => window.tvfEditor.request({ type: 'add', constraint: c }), c);
+          await waitExact();
+          const e = (await log()).filter((x) => x.type === 'add').at(-1);
+          addFirst.push(e.total_ms);
+          addExact.push(e.exact_ms ?? e.total_ms);
+          addServer.push(e.exact_server_ms ?? e.server_ms);
+          const id = await page.evaluate((face) => window.tvfEditor.constraints()
+            .find((x) => x.constraint.type === 'vector' && x.constraint.face === face)?.id, face);
+          await page.evaluate((id) => window.tvfEditor.request({ type: 'remove', id }), id);
+          await waitExact();
+        }
+        rows.push(`| ${d} | ${f(median(addFirst))} ms | ${f(median(addExact))} ms | ${f(median(addServer))} ms |`);
         console.log(`| ${d} | ${f(median(valueEdits))} ms | ${f(median(moveFirst))} ms | ${f(median(moveExact))} ms | ` +
           `${f(median(moveServer))} ms | ${f(median(differences), 4)} | ${f(median(angles))} deg |`);
       }
+      console.log('\n| basis size d | add: reduced answer on the page | add: exact answer on the page | add: server time to exact |');
+      console.log('|---|---|---|---|');
+      for (const r of rows) console.log(r);
     }
   } finally {
     await context.close();

@@ -57,9 +57,9 @@ Eigen::VectorXd Basis_rows::operator()(const Constraint_row& row) const
       edges[static_cast<int>(it.col())] += e.second * it.value();
   }
   Eigen::VectorXd exact = Eigen::VectorXd::Zero(basis_.number_of_exact());
-  for(const auto& v : vertices) exact += v.second * basis_.exact_eigenfunctions().row(v.first).transpose();
+  for(const auto& v : vertices) basis_.exact_eigenfunctions().add_row(v.first, v.second, exact);
   Eigen::VectorXd coexact = Eigen::VectorXd::Zero(basis_.number_of_coexact());
-  for(const auto& e : edges) coexact += e.second * basis_.coexact_eigenfunctions().row(e.first).transpose();
+  for(const auto& e : edges) basis_.coexact_eigenfunctions().add_row(e.first, e.second, coexact);
   Eigen::VectorXd result = Eigen::VectorXd::Zero(d_);
   for(int i = 0; i < exact.size(); ++i)
     if(exact_position_[i] >= 0) result[exact_position_[i]] = exact[i] * exact_scale_[i];

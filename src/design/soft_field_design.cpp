@@ -2,10 +2,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 
 #include <CGAL/Tangent_vector_fields/Soft_field_design.h>
-#include <CGAL/Tangent_vector_fields/internal/projected_block_cg.h>
+#include <CGAL/Tangent_vector_fields/Spline_solver.h>
 #include <CGAL/Tangent_vector_fields/errors.h>
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/QR>
 
 #include <algorithm>
 #include <chrono>
@@ -15,67 +16,6 @@ namespace CGAL {
 namespace Tangent_vector_fields {
 
 namespace internal {
-
-Eigen::MatrixXd projected_block_cg(const std::function<Eigen::MatrixXd(const Eigen::MatrixXd&)>& apply_A,
-                                   const std::function<Eigen::MatrixXd(const Eigen::MatrixXd&)>& precondition,
-                                   const std::function<void(Eigen::MatrixXd&)>& project_primal,
-                                   const std::function<void(Eigen::MatrixXd&)>& project_dual,
-                                   const Eigen::MatrixXd& B, double tolerance, int max_iterations,
-                                   int& iterations, double& residual)
-{
-  const Eigen::Index m = B.cols();
-  Eigen::MatrixXd R = B;
-  project_dual(R);
-  const Eigen::VectorXd b_norm = R.colwise().norm().transpose();
-  // Start from the preconditioner's answer: it is already accurate in most directions.
-  Eigen::MatrixXd X = Eigen::MatrixXd::Zero(B.rows(), m);
-  Eigen::MatrixXd Z = precondition(R);
-  project_primal(Z);
-  Eigen::MatrixXd P = Z;
-  Eigen::VectorXd rz = (R.cwiseProduct(Z)).colwise().sum().transpose();
-  std::vector<bool> active(m);
-  for(Eigen::Index j = 0; j < m; ++j) active[j] = b_norm[j] > 0;
-  iterations = 0;
-  residual = 0;
-  Eigen::VectorXd relative = Eigen::VectorXd::Zero(m);
-  for(int it = 0; it < max_iterations; ++it)
-  {
-    if(std::none_of(active.begin(), active.end(), [](bool a) { return a; })) break;
-    ++iterations;
-    const Eigen::MatrixXd AP = apply_A(P);
-    for(Eigen::Index j = 0; j < m; ++j)
-    {
-      if(!active[j]) continue;
-      const double pap = P.col(j).dot(AP.col(j));
-      if(!(pap > 0))
-      {
-        active[j] = false; // converged to roundoff: no descent direction left
-        continue;
-      }
-      const double alpha = rz[j] / pap;
-      X.col(j) += alpha * P.col(j);
-      R.col(j) -= alpha * AP.col(j);
-      relative[j] = R.col(j).norm() / b_norm[j];
-      if(relative[j] <= tolerance) active[j] = false;
-    }
-    Z = precondition(R);
-    project_primal(Z);
-    for(Eigen::Index j = 0; j < m; ++j)
-    {
-      if(!active[j]) continue;
-      const double rz_new = R.col(j).dot(Z.col(j));
-      const double beta = rz_new / rz[j];
-      rz[j] = rz_new;
-      P.col(j) = Z.col(j) + beta * P.col(j);
-    }
-  }
-  // True residuals (the recurrence drifts).
-  Eigen::MatrixXd true_residual = B - apply_A(X);
-  project_dual(true_residual);
-  for(Eigen::Index j = 0; j < m; ++j)
-    if(b_norm[j] > 0) residual = std::max(residual, true_residual.col(j).norm() / b_norm[j]);
-  return X;
-}
 
 // A power of two near the largest |x_i| (1 for zero or non-finite x): dividing by it is exact.
 static double value_scale(const Eigen::VectorXd& x)
@@ -288,94 +228,109 @@ double Reduced_soft_design::energy() const
 
 Full_soft_design::Full_soft_design(std::shared_ptr<const Hodge_solver> hodge, const Soft_design_options& options)
   : Soft_field_design(std::shared_ptr<const Operator_matrices>(hodge, &hodge->operators()), options),
-    hodge_(std::move(hodge))
+    hodge_(hodge), length_unit_(internal::spline_length_unit(hodge->operators())),
+    // omega_ is for the mesh as given; the pull-backs measure it in the length unit.
+    pull_back_(hodge, internal::Design_energy::dirichlet, omega_ / (length_unit_ * length_unit_), length_unit_)
 {}
 
 Full_soft_design::~Full_soft_design() = default;
 
-void Full_soft_design::factor() const
+void Full_soft_design::rows_added(std::vector<Weighted_row>& rows)
 {
-  const auto start = std::chrono::steady_clock::now();
-  const Operator_matrices& ops = *operators_;
-  if(energy_matrix_.rows() == 0)
-  {
-    energy_matrix_ = ops.S();
-    if(omega_ > 0) energy_matrix_ += omega_ * ops.B(); // B only when it is asked for
-  }
-  std::vector<Eigen::Triplet<double>> triplets;
-  std::vector<std::pair<Eigen::VectorXd, double>> harmonic_rows;
-  const int nh = hodge_->harmonic_dimension();
-  const Eigen::MatrixXd* Uh = nh > 0 ? &hodge_->harmonic_basis() : nullptr;
-  for(const auto& e : entries_)
-    for(const Weighted_row& r : e.second.rows)
-    {
-      for(const auto& a : r.row.entries)
-        for(const auto& b : r.row.entries) triplets.emplace_back(a.first, b.first, r.weight * a.second * b.second);
-      if(Uh)
-      {
-        Eigen::VectorXd h = Eigen::VectorXd::Zero(nh);
-        for(const auto& a : r.row.entries) h += a.second * Uh->row(a.first).transpose();
-        harmonic_rows.emplace_back(h, r.weight);
-      }
-    }
-  Eigen::SparseMatrix<double> constraints(energy_matrix_.rows(), energy_matrix_.cols());
-  constraints.setFromTriplets(triplets.begin(), triplets.end());
-  system_ = energy_matrix_ + constraints;
-  const Eigen::MatrixXd N = undetermined_directions(harmonic_rows, nh);
-  undetermined_fields_ = Uh ? Eigen::MatrixXd(*Uh * N) : Eigen::MatrixXd(system_.rows(), 0);
-  // A tiny shift keeps the factorisation definite on undetermined harmonic fields;
-  // CG against the unshifted matrix removes its effect (as in Full_spline_solver).
-  const Eigen::VectorXd& masses = ops.field_masses();
-  double bound = 0;
-  for(int k = 0; k < system_.outerSize(); ++k)
-  {
-    double s = 0;
-    for(Eigen::SparseMatrix<double>::InnerIterator it(system_, k); it; ++it) s += std::abs(it.value());
-    bound = std::max(bound, s / masses[k]);
-  }
-  Eigen::SparseMatrix<double> shifted = system_;
-  shifted += (1e-10 * bound) * ops.MX();
-  solver_ = std::make_unique<Sparse_spd_solver>();
-  solver_->factor(shifted, "S + omega B + C^T W C (full soft design)");
-  factored_ = true;
   solved_ = false;
-  factor_seconds_ = seconds_since(start);
+  if(rows.empty()) return;
+  factor_seconds_ += pull_back_.factor();
+  const auto start = std::chrono::steady_clock::now();
+  const Eigen::Index n = operators_->field_masses().size(), m = static_cast<Eigen::Index>(rows.size());
+  // Each row divided by a power of two near its largest entry (divergence rows of a tiny
+  // mesh are huge), the pull-back multiplied back: exact.
+  Eigen::MatrixXd R = Eigen::MatrixXd::Zero(n, m);
+  Eigen::VectorXd scales(m);
+  for(Eigen::Index j = 0; j < m; ++j)
+  {
+    for(const auto& e : rows[j].row.entries) R(e.first, j) += e.second;
+    scales[j] = internal::value_scale(R.col(j));
+    R.col(j) /= scales[j];
+  }
+  Eigen::MatrixXd H;
+  const Eigen::MatrixXd Y = pull_back_.apply(R, H, residual_);
+  for(Eigen::Index j = 0; j < m; ++j)
+  {
+    rows[j].y = Y.col(j) * scales[j];
+    rows[j].harmonic = H.col(j) * scales[j];
+  }
+  pull_back_seconds_ += seconds_since(start);
 }
 
 void Full_soft_design::solve() const
 {
-  if(!factored_) factor();
   const auto start = std::chrono::steady_clock::now();
-  const int n = static_cast<int>(system_.rows());
-  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(n, 1);
+  std::vector<const Weighted_row*> rows;
   for(const auto& e : entries_)
-    for(const Weighted_row& r : e.second.rows)
-      for(const auto& a : r.row.entries) rhs(a.first, 0) += r.weight * r.row.value * a.second;
-  const Eigen::VectorXd& masses = operators_->field_masses();
-  const Eigen::MatrixXd& Z = undetermined_fields_;
-  auto project_primal = [&](Eigen::MatrixXd& X) {
-    if(Z.cols() > 0) X -= Z * (Z.transpose() * masses.asDiagonal() * X);
-  };
-  auto project_dual = [&](Eigen::MatrixXd& X) {
-    if(Z.cols() > 0) X -= masses.asDiagonal() * (Z * (Z.transpose() * X));
-  };
-  auto apply = [&](const Eigen::MatrixXd& X) -> Eigen::MatrixXd { return system_ * X; };
-  auto precondition = [&](const Eigen::MatrixXd& R) -> Eigen::MatrixXd { return solver_->solve(R); };
-  int iterations = 0;
-  // Linear in the values: CG on the right-hand side scaled to near 1 (its squared
-  // norms would overflow for values near the largest double), the result scaled back.
-  const double scale = internal::value_scale(rhs.col(0));
-  x_ = internal::projected_block_cg(apply, precondition, project_primal, project_dual, rhs / scale, 1e-12, 200,
-                                    iterations, residual_)
-           .col(0) *
-       scale;
+    for(const Weighted_row& r : e.second.rows) rows.push_back(&r);
+  const Eigen::Index m = static_cast<Eigen::Index>(rows.size());
+  x_ = Eigen::VectorXd::Zero(operators_->field_masses().size());
+  undetermined_ = hodge_->harmonic_dimension();
+  if(m == 0)
+  {
+    solved_ = true;
+    return;
+  }
+  // A = K + W^-1 (K_ij = r_i y_j through the few entries of r_i), values c.
+  Eigen::MatrixXd A(m, m);
+  Eigen::VectorXd c(m);
+  for(Eigen::Index i = 0; i < m; ++i)
+  {
+    for(Eigen::Index j = 0; j < m; ++j)
+    {
+      double s = 0;
+      for(const auto& e : rows[i]->row.entries) s += e.second * rows[j]->y[e.first];
+      A(i, j) = s;
+    }
+    c[i] = rows[i]->row.value;
+  }
+  A = (0.5 * (A + A.transpose())).eval();
+  for(Eigen::Index i = 0; i < m; ++i) A(i, i) += 1 / rows[i]->weight;
+  // Harmonic directions some constraint sees: the complement P of the undetermined ones.
+  const int nh = hodge_->harmonic_dimension();
+  Eigen::MatrixXd P(nh, 0);
+  if(nh > 0)
+  {
+    std::vector<std::pair<Eigen::VectorXd, double>> harmonic_rows;
+    for(const Weighted_row* r : rows) harmonic_rows.emplace_back(r->harmonic / length_unit_, r->weight);
+    const Eigen::MatrixXd N = undetermined_directions(harmonic_rows, nh);
+    Eigen::MatrixXd full_basis = Eigen::MatrixXd::Identity(nh, nh);
+    if(N.cols() > 0) full_basis = Eigen::HouseholderQR<Eigen::MatrixXd>(N).householderQ();
+    P = full_basis.rightCols(nh - N.cols());
+  }
+  Eigen::MatrixXd C(m, P.cols());
+  for(Eigen::Index i = 0; i < m; ++i) C.row(i) = rows[i]->harmonic.transpose() * P;
+  const Eigen::LDLT<Eigen::MatrixXd> A_factor(A);
+  if(A_factor.info() != Eigen::Success || !(A_factor.vectorD().minCoeff() > 0))
+    throw Numerical_failure("soft design: the constraint system K + W^-1 is not positive definite "
+                            "(weights too large for the constraints' dependence)");
+  // Linear in the values: solved for c scaled to near 1, the result scaled back.
+  const double scale = internal::value_scale(c);
+  const Eigen::VectorXd b = c / scale;
+  Eigen::VectorXd z = Eigen::VectorXd::Zero(P.cols());
+  if(P.cols() > 0)
+  {
+    const Eigen::MatrixXd AiC = A_factor.solve(C);
+    const Eigen::MatrixXd schur = C.transpose() * AiC;
+    z = schur.ldlt().solve(AiC.transpose() * b);
+  }
+  const Eigen::VectorXd t = A_factor.solve(b - C * z);
+  for(Eigen::Index j = 0; j < m; ++j) x_ += t[j] * rows[j]->y;
+  if(P.cols() > 0) x_ += pull_back_.harmonic_field(P * z);
+  x_ *= scale;
+  if(!x_.allFinite()) throw Numerical_failure("soft design: the field is not finite");
   solved_ = true;
   solve_seconds_ = seconds_since(start);
 }
 
 Eigen::VectorXd Full_soft_design::field() const
 {
-  if(!solved_ || !factored_) solve();
+  if(!solved_) solve();
   return x_;
 }
 
@@ -383,7 +338,7 @@ double Full_soft_design::energy() const
 {
   const double scale = internal::value_scale(field());
   const Eigen::VectorXd x = field() / scale;
-  return x.dot(energy_matrix_ * x) * scale * scale;
+  return x.dot(pull_back_.apply_energy(x).col(0)) * scale * scale;
 }
 
 } // namespace Tangent_vector_fields

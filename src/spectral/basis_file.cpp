@@ -96,24 +96,44 @@ std::ifstream open_basis_file(const std::string& path, const std::string& what, 
 
 void Binary_reader::expect_basis_header(const char (&magic)[8], std::uint32_t version, const Intrinsic_mesh& mesh)
 {
+  expect_basis_header(magic, version, version, mesh);
+}
+
+std::uint32_t Binary_reader::expect_basis_header(const char (&magic)[8], std::uint32_t oldest, std::uint32_t newest,
+                                                 const Intrinsic_mesh& mesh)
+{
   expect_magic(magic, "not a " + what_ + " file");
   const std::uint32_t found = value<std::uint32_t>();
-  if(found != version)
-    fail("file format version " + std::to_string(found) + ", this library reads version " + std::to_string(version));
+  if(found < oldest || found > newest)
+    fail("file format version " + std::to_string(found) + ", this library reads version " +
+         (oldest == newest ? std::to_string(newest) : std::to_string(oldest) + " to " + std::to_string(newest)));
   if(value<std::uint32_t>() != byte_order_mark) fail("written on a machine of another byte order");
   expect_mesh_identity(mesh);
+  return found;
 }
 
 Eigen::MatrixXd Binary_reader::matrix(Eigen::Index rows, Eigen::Index cols, const char* what)
 {
+  return any_matrix<Eigen::MatrixXd>(rows, cols, what);
+}
+
+Eigen::MatrixXf Binary_reader::float_matrix(Eigen::Index rows, Eigen::Index cols, const char* what)
+{
+  return any_matrix<Eigen::MatrixXf>(rows, cols, what);
+}
+
+template <class Matrix>
+Matrix Binary_reader::any_matrix(Eigen::Index rows, Eigen::Index cols, const char* what)
+{
+  typedef typename Matrix::Scalar Scalar;
   const std::int64_t r = value<std::int64_t>(), c = value<std::int64_t>();
   if((rows >= 0 && r != rows) || (cols >= 0 && c != cols) || r < 0 || c < 0)
     fail(std::string("the ") + what + " have the wrong size");
   // Checked by division: r * c * 8 may overflow for hostile sizes.
-  if(r > 0 && static_cast<std::uint64_t>(c) > left_ / sizeof(double) / static_cast<std::uint64_t>(r))
+  if(r > 0 && static_cast<std::uint64_t>(c) > left_ / sizeof(Scalar) / static_cast<std::uint64_t>(r))
     fail("the file is truncated");
-  Eigen::MatrixXd M(r, c);
-  read(M.data(), sizeof(double) * M.size());
+  Matrix M(r, c);
+  read(M.data(), sizeof(Scalar) * M.size());
   return M;
 }
 

@@ -156,7 +156,7 @@ int count_below(const Scalar_problem& p, double tau)
 }
 
 const char file_magic[8] = {'T', 'V', 'F', 'B', 'A', 'S', 'I', 'S'};
-const std::uint32_t file_version = 1;
+const std::uint32_t file_version = 2; // 2: eigenfunctions in double or float32 (a precision byte)
 
 } // namespace
 
@@ -279,9 +279,9 @@ Eigenfield_basis::Eigenfield_basis(std::shared_ptr<const Hodge_solver> solver, c
   }
 
   exact_values_ = exact_solved.values;
-  exact_functions_ = std::move(exact_solved.functions);
+  exact_functions_ = Eigenfunction_matrix(std::move(exact_solved.functions));
   coexact_values_ = coexact_solved.values;
-  coexact_functions_ = std::move(coexact_solved.functions);
+  coexact_functions_ = Eigenfunction_matrix(std::move(coexact_solved.functions));
   report_.max_residual = std::max(exact_solved.max_residual, coexact_solved.max_residual);
   report_.exact_complete_below = exact_solved.complete_below;
   report_.coexact_complete_below = coexact_solved.complete_below;
@@ -311,15 +311,27 @@ Eigenfield_basis::Eigenfield_basis(std::shared_ptr<const Hodge_solver> solver, c
   {
     report_.exact_complete_below = exact_values_[exact_used];
     exact_values_.conservativeResize(exact_used);
-    exact_functions_.conservativeResize(Eigen::NoChange, exact_used);
+    exact_functions_.keep_columns(exact_used);
   }
   if(coexact_used < number_of_coexact())
   {
     report_.coexact_complete_below = coexact_values_[coexact_used];
     coexact_values_.conservativeResize(coexact_used);
-    coexact_functions_.conservativeResize(Eigen::NoChange, coexact_used);
+    coexact_functions_.keep_columns(coexact_used);
   }
+  set_precision(request.precision);
   progress("done", 1);
+}
+
+void Eigenfield_basis::set_precision(Eigenfunction_precision precision)
+{
+  exact_functions_.set_precision(precision);
+  coexact_functions_.set_precision(precision);
+}
+
+std::size_t Eigenfield_basis::memory_bytes() const
+{
+  return exact_functions_.bytes() + coexact_functions_.bytes() + sizeof(double) * static_cast<std::size_t>(harmonic_.size());
 }
 
 void Eigenfield_basis::merge(int count)
@@ -369,7 +381,7 @@ Eigenfield_basis::Matrix Eigenfield_basis::coefficients(const Matrix& fields) co
   Matrix a(size(), fields.cols());
   if(number_of_exact() > 0)
   {
-    const Matrix Ae = (exact_functions_.transpose() * (ops.G().transpose() * weighted)).eval();
+    const Matrix Ae = exact_functions_.transpose_times(ops.G().transpose() * weighted);
     for(int k = 0; k < size(); ++k)
       if(order_[k].type == Eigenfield_type::exact)
         a.row(k) = Ae.row(order_[k].index) / std::sqrt(exact_values_[order_[k].index]);
@@ -379,7 +391,7 @@ Eigenfield_basis::Matrix Eigenfield_basis::coefficients(const Matrix& fields) co
     // <v, J G* psi>_MX = psi^T G*^T J^T MX v = -psi^T G*^T (J MX v)
     Matrix rotated(weighted.rows(), weighted.cols());
     for(Eigen::Index c = 0; c < weighted.cols(); ++c) rotated.col(c) = ops.rotate(weighted.col(c));
-    const Matrix Ac = -(coexact_functions_.transpose() * (ops.G_star_interior().transpose() * rotated)).eval();
+    const Matrix Ac = -coexact_functions_.transpose_times(ops.G_star_interior().transpose() * rotated);
     for(int k = 0; k < size(); ++k)
       if(order_[k].type == Eigenfield_type::coexact)
         a.row(k) = Ac.row(order_[k].index) / std::sqrt(coexact_values_[order_[k].index]);
@@ -436,10 +448,10 @@ Eigenfield_basis::Matrix Eigenfield_basis::decompress(const Compressed_fields& c
     }
   }
   Matrix v = Matrix::Zero(ops.field_masses().size(), a.cols());
-  if(exact_used > 0) v += ops.G() * (exact_functions_.leftCols(exact_used) * ce.topRows(exact_used)).eval();
+  if(exact_used > 0) v += ops.G() * exact_functions_.times(ce.topRows(exact_used));
   if(coexact_used > 0)
   {
-    const Matrix g = ops.G_star_interior() * (coexact_functions_.leftCols(coexact_used) * cc.topRows(coexact_used)).eval();
+    const Matrix g = ops.G_star_interior() * coexact_functions_.times(cc.topRows(coexact_used));
     for(Eigen::Index c = 0; c < g.cols(); ++c) v.col(c) += ops.rotate(g.col(c));
   }
   if(any_harmonic) v += harmonic_ * ch;
@@ -547,9 +559,9 @@ void Eigenfield_basis::save(const std::string& path) const
   const Intrinsic_mesh& mesh = operators().mesh();
   internal::write_basis_header(out, file_magic, file_version, mesh);
   write_matrix(out, exact_values_);
-  write_matrix(out, exact_functions_);
+  exact_functions_.write(out);
   write_matrix(out, coexact_values_);
-  write_matrix(out, coexact_functions_);
+  coexact_functions_.write(out);
   write_matrix(out, harmonic_);
   write_value<std::int64_t>(out, size());
   for(const Element& e : order_)
@@ -574,12 +586,16 @@ Eigenfield_basis Eigenfield_basis::load(std::shared_ptr<const Hodge_solver> solv
   std::ifstream in = internal::open_basis_file(path, "spectral basis", bytes);
   internal::Binary_reader r(in, path, bytes, "spectral basis");
   const Intrinsic_mesh& mesh = basis.operators().mesh();
-  r.expect_basis_header(file_magic, file_version, mesh);
+  const std::uint32_t version = r.expect_basis_header(file_magic, 1, file_version, mesh);
   const Eigen::Index nv = mesh.number_of_vertices(), ne = mesh.number_of_interior_edges(), nf = mesh.number_of_faces();
   basis.exact_values_ = r.matrix(-1, 1, "exact eigenvalues");
-  basis.exact_functions_ = r.matrix(nv, basis.exact_values_.size(), "exact eigenfunctions");
+  auto functions = [&](Eigen::Index rows, Eigen::Index cols, const char* what) {
+    // Version 1 stored double eigenfunctions without a precision byte.
+    return version == 1 ? Eigenfunction_matrix(r.matrix(rows, cols, what)) : Eigenfunction_matrix::read(r, rows, cols, what);
+  };
+  basis.exact_functions_ = functions(nv, basis.exact_values_.size(), "exact eigenfunctions");
   basis.coexact_values_ = r.matrix(-1, 1, "coexact eigenvalues");
-  basis.coexact_functions_ = r.matrix(ne, basis.coexact_values_.size(), "coexact eigenfunctions");
+  basis.coexact_functions_ = functions(ne, basis.coexact_values_.size(), "coexact eigenfunctions");
   basis.harmonic_ = r.matrix(2 * nf, -1, "harmonic fields");
   const std::int64_t count = r.value<std::int64_t>();
   if(count < 0 || count > basis.number_of_harmonic() + basis.number_of_exact() + basis.number_of_coexact())
@@ -601,7 +617,7 @@ Eigenfield_basis Eigenfield_basis::load(std::shared_ptr<const Hodge_solver> solv
     *x = r.value<std::int32_t>();
   r.expect_magic(file_magic, "the file is corrupt (no end marker)");
   basis.update_values();
-  if(!basis.values_.allFinite() || !basis.exact_functions_.allFinite() || !basis.coexact_functions_.allFinite() ||
+  if(!basis.values_.allFinite() || !basis.exact_functions_.all_finite() || !basis.coexact_functions_.all_finite() ||
      !basis.harmonic_.allFinite())
     r.fail("the file holds non-finite numbers");
   return basis;

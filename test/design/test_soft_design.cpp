@@ -94,6 +94,69 @@ TEST(SoftDesign, ReducedEqualsFullOnTheWholeBasisAndEditsEqualAFreshSolve)
   }
 }
 
+// The full soft design goes through pull-backs and a small system; here its answer is
+// checked against the normal equations formed from S, B and the rows directly:
+// (S + omega B) x + sum_i w_i r_i^T (r_i x - c_i) = 0.  Then edits in any order against a
+// fresh design.
+TEST(SoftDesign, FullDesignMeetsTheNormalEquationsAndEditsEqualAFreshOne)
+{
+  for(int shape = 0; shape < 2; ++shape)
+  {
+    const Mesh mesh = shape == 0 ? make_torus(14, 8) : make_disk(7, 0.3); // genus 1; an annulus
+    Design_setup s = setup(mesh, 10);
+    const auto constraints = mixed_constraints(s.ops->mesh(), 5, 11);
+    for(double omega : {0.0, 0.05})
+    {
+      TVF::Soft_design_options options;
+      options.omega = omega;
+      TVF::Full_soft_design design(s.hodge, options);
+      std::vector<int> ids;
+      std::vector<double> weights;
+      for(std::size_t i = 0; i < constraints.size(); ++i)
+      {
+        weights.push_back(i % 3 == 0 ? 40.0 : 2.0);
+        ids.push_back(design.add(constraints[i], weights.back()));
+      }
+      const Eigen::VectorXd x = design.field();
+      ASSERT_TRUE(x.allFinite());
+      const double area = s.ops->face_areas().sum();
+      const Eigen::SparseMatrix<double> Q = s.ops->S() + (omega * area) * s.ops->B();
+      Eigen::VectorXd gradient = Q * x, pull = Eigen::VectorXd::Zero(x.size());
+      for(std::size_t i = 0; i < constraints.size(); ++i)
+        for(const TVF::Constraint_row& r : TVF::constraint_rows(*s.ops, constraints[i]))
+        {
+          const double w = weights[i] * r.unit_area_scale * r.unit_area_scale;
+          double rx = 0;
+          for(const auto& e : r.entries) rx += e.second * x[e.first];
+          for(const auto& e : r.entries)
+          {
+            gradient[e.first] += w * e.second * (rx - r.value);
+            pull[e.first] += w * e.second * r.value;
+          }
+        }
+      // Relative to the size of the right-hand side; B's condition (~nf^2) limits the products.
+      EXPECT_LT(gradient.norm(), 1e-9 * pull.norm()) << "shape " << shape << " omega " << omega;
+      EXPECT_NEAR(design.energy(), x.dot(Q * x), 1e-9 * std::abs(design.energy()));
+      EXPECT_LT(design.residual(), 1e-10);
+
+      // Edits: a removal, a value change, a new weight (a replacement), an addition.
+      design.remove(ids[3]);
+      auto changed = constraints[5];
+      if(changed.kind == TVF::Constraint_kind::vector) changed.vector = {{-changed.vector[0], -changed.vector[1], -changed.vector[2]}};
+      else changed.value = -2 * changed.value - 1;
+      design.change(ids[5], changed, weights[5]);
+      design.change(ids[0], constraints[0], 7.0);
+      const auto extra = TVF::Field_constraint::divergence_at_vertex(3, 0.5);
+      design.add(extra, 1.0);
+      TVF::Full_soft_design fresh(s.hodge, options);
+      for(std::size_t i = 0; i < constraints.size(); ++i)
+        if(i != 3) fresh.add(i == 5 ? changed : constraints[i], i == 0 ? 7.0 : weights[i]);
+      fresh.add(extra, 1.0);
+      EXPECT_LT(relative_mx_error(*s.ops, design.field(), fresh.field()), 1e-10) << "shape " << shape;
+    }
+  }
+}
+
 TEST(SoftDesign, UndeterminedHarmonicPartAndScaleInvariance)
 {
   const Mesh base = make_torus(16, 10);

@@ -9,6 +9,7 @@
 /// computation, storage as eigenfunctions, transforms, energies, filters,
 /// compression, and a versioned file format.
 
+#include <CGAL/Tangent_vector_fields/Eigenfunction_matrix.h>
 #include <CGAL/Tangent_vector_fields/Hodge_solver.h>
 #include <CGAL/Tangent_vector_fields/Operator_matrices.h>
 #include <CGAL/Tangent_vector_fields/Spectral_filter.h>
@@ -41,6 +42,8 @@ struct Basis_request
   int exact_count = 0;     ///< `per_type`: exact fields, in addition to all harmonic ones
   int coexact_count = 0;   ///< `per_type`: coexact fields, in addition to all harmonic ones
   double max_eigenvalue = 0; ///< `below_eigenvalue`: every eigenfield with eigenvalue `<= max_eigenvalue`
+  /// How the eigenfunctions are kept once computed (they are computed in double).
+  Eigenfunction_precision precision = Eigenfunction_precision::float64;
 
   static Basis_request lowest(int d)
   {
@@ -144,14 +147,21 @@ public:
   int index_in_type(int k) const { return order_[k].index; }
 
   /// `W phi = lambda M phi`, `M`-orthonormal columns (vertices in no face: 0).
-  const Matrix& exact_eigenfunctions() const { return exact_functions_; }
+  const Eigenfunction_matrix& exact_eigenfunctions() const { return exact_functions_; }
   const Vector& exact_eigenvalues() const { return exact_values_; }
   /// `W* psi = mu M* psi` on interior edges, `M*`-orthonormal columns.
-  const Matrix& coexact_eigenfunctions() const { return coexact_functions_; }
+  const Eigenfunction_matrix& coexact_eigenfunctions() const { return coexact_functions_; }
   const Vector& coexact_eigenvalues() const { return coexact_values_; }
   /// `MX`-orthonormal harmonic fields (`2nf x h`).
   const Matrix& harmonic_fields() const { return harmonic_; }
   const Basis_report& report() const { return report_; }
+  /// How the eigenfunctions are stored.
+  Eigenfunction_precision precision() const { return exact_functions_.precision(); }
+  /// Stores the eigenfunctions in `precision` (float32: each entry rounded, half the memory;
+  /// back to float64 keeps the rounded values).
+  void set_precision(Eigenfunction_precision precision);
+  /// Bytes held by the eigenfunctions and the harmonic fields.
+  std::size_t memory_bytes() const;
 
   /// Element `k` as a field (`2nf`, unit norm in `MX`).
   Vector eigenfield(int k) const;
@@ -191,7 +201,8 @@ private:
   void update_values();  // values_ from order_
 
   std::shared_ptr<const Hodge_solver> solver_;
-  Matrix exact_functions_, coexact_functions_, harmonic_;
+  Eigenfunction_matrix exact_functions_, coexact_functions_;
+  Matrix harmonic_;
   Vector exact_values_, coexact_values_;
   std::vector<Element> order_;
   Vector values_;

@@ -10,7 +10,7 @@
 
 #include <CGAL/Tangent_vector_fields/Hodge_solver.h>
 #include <CGAL/Tangent_vector_fields/Spline_solver.h>
-#include <CGAL/Tangent_vector_fields/Sparse_spd_solver.h>
+#include <CGAL/Tangent_vector_fields/internal/Hodge_pull_back.h>
 
 #include <memory>
 
@@ -62,14 +62,9 @@ protected:
   void energy_changed() override;
 
 private:
-  struct Screened;
-  void factor() const;
-  // (B + omega S) x without forming B: S MX^-1 S x + omega S x.
-  Eigen::MatrixXd apply_energy(const Eigen::MatrixXd& X) const;
-
   std::shared_ptr<const Hodge_solver> hodge_;
-  mutable std::unique_ptr<Screened> screened_; // W + omega M, W* + omega M* (omega > 0)
-  mutable bool factored_ = false;
+  // The pull-back chains for the current omega (factored by the first pull-back).
+  std::unique_ptr<internal::Hodge_pull_back> pull_back_;
   mutable Full_solve_statistics statistics_;
 };
 

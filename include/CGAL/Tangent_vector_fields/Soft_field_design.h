@@ -12,7 +12,7 @@
 #include <CGAL/Tangent_vector_fields/Eigenfield_basis.h>
 #include <CGAL/Tangent_vector_fields/Field_constraint.h>
 #include <CGAL/Tangent_vector_fields/Hodge_solver.h>
-#include <CGAL/Tangent_vector_fields/Sparse_spd_solver.h>
+#include <CGAL/Tangent_vector_fields/internal/Hodge_pull_back.h>
 #include <CGAL/Tangent_vector_fields/internal/Basis_rows.h>
 #include <CGAL/Tangent_vector_fields/internal/Constraint_system.h>
 
@@ -66,6 +66,8 @@ protected:
     Constraint_row row;
     double weight = 0;       // w_i times the unit-area scale squared
     Eigen::VectorXd in_basis; // the row in a spectral basis (reduced design only)
+    Eigen::VectorXd y;        // its pull-back Q^+ r^T (full design only)
+    Eigen::VectorXd harmonic; // its harmonic part (full design only)
   };
   struct Entry
   {
@@ -131,9 +133,21 @@ private:
   mutable Eigen::VectorXd coefficients_;
 };
 
-/// \brief Soft design on all `2nf` unknowns: `(S + omega B + C~^T W C~) x = C~^T W c`,
-/// one CHOLMOD factorisation per constraint set (the matrix changes with every
-/// constraint) and conjugate-gradient refinement to a relative residual of 1e-12.
+/// \brief Soft design on all `2nf` unknowns: the minimiser of
+/// `x^T Q x + sum_i w_i (r_i x - c_i)^2` with `Q = S + omega B`, through the Hodge structure.
+///
+/// `Q` is never formed or factored with the constraints.  Each row is pulled back once,
+/// when its constraint is added, to `y_i = Q^+ r_i^T` (two chained solves with the Hodge
+/// solver's factorisations of `W` and `W*`, three when `omega > 0`:
+/// `internal::Hodge_pull_back`); then `x = sum_i t_i y_i + U_h z` with
+/// \code
+///   [ K + W^-1   C_h ] [ t ]   [ c ]
+///   [ C_h^T      0   ] [ z ] = [ 0 ],      K_ij = r_i y_j,  C_h = rows' harmonic parts
+/// \endcode
+/// (`t` are the weighted residuals `w_i (c_i - r_i x)`; `z` spans the harmonic directions
+/// some constraint sees).  Adding a constraint costs its pull-backs, removing one nothing, a
+/// value edit one small dense solve and the product `Y t`: no sparse factorisation depends
+/// on the constraints.
 class Full_soft_design : public Soft_field_design
 {
 public:
@@ -142,26 +156,30 @@ public:
   ~Full_soft_design();
   Eigen::VectorXd field() const override;
   double energy() const override;
+  /// Seconds spent factoring `W`, `W*` (and their screened forms when `omega > 0`).
   double factor_seconds() const { return factor_seconds_; }
+  /// Seconds spent pulling rows back, in total.
+  double pull_back_seconds() const { return pull_back_seconds_; }
+  /// Seconds of the last solve (small system and the product with the pull-backs).
   double solve_seconds() const { return solve_seconds_; }
+  /// Largest relative residual of the second-order solves of the pull-backs (solver precision).
   double residual() const { return residual_; }
 
 protected:
-  void rows_added(std::vector<Weighted_row>&) override { factored_ = false; }
-  void rows_removed(const std::vector<Weighted_row>&) override { factored_ = false; }
+  void rows_added(std::vector<Weighted_row>& rows) override;
+  void rows_removed(const std::vector<Weighted_row>&) override { solved_ = false; }
   void values_changed() override { solved_ = false; }
 
 private:
-  void factor() const;
   void solve() const;
 
   std::shared_ptr<const Hodge_solver> hodge_;
-  mutable Eigen::SparseMatrix<double> energy_matrix_, system_;
-  mutable std::unique_ptr<Sparse_spd_solver> solver_;
-  mutable Eigen::MatrixXd undetermined_fields_; // MX-orthonormal harmonic fields no constraint sees
-  mutable bool factored_ = false, solved_ = false;
+  double length_unit_;
+  internal::Hodge_pull_back pull_back_;
+  mutable bool solved_ = false;
   mutable Eigen::VectorXd x_;
-  mutable double factor_seconds_ = 0, solve_seconds_ = 0, residual_ = 0;
+  double factor_seconds_ = 0, pull_back_seconds_ = 0, residual_ = 0;
+  mutable double solve_seconds_ = 0;
 };
 
 } // namespace Tangent_vector_fields

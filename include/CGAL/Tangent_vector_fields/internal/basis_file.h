@@ -69,16 +69,23 @@ public:
   }
   /// A matrix written by `write_matrix`; `rows`/`cols` < 0: any.
   Eigen::MatrixXd matrix(Eigen::Index rows, Eigen::Index cols, const char* what);
+  /// The same with float entries.
+  Eigen::MatrixXf float_matrix(Eigen::Index rows, Eigen::Index cols, const char* what);
   /// Checks 8 magic bytes.
   void expect_magic(const char (&magic)[8], const std::string& why_not);
   /// Checks the fingerprint and the geometry signature written by `write_mesh_identity`.
   void expect_mesh_identity(const Intrinsic_mesh& mesh);
   /// Checks a header written by `write_basis_header` ("not a <what> file", version, byte order, mesh).
   void expect_basis_header(const char (&magic)[8], std::uint32_t version, const Intrinsic_mesh& mesh);
+  /// The same for a file of any version from `oldest` to `newest`; returns the version found.
+  std::uint32_t expect_basis_header(const char (&magic)[8], std::uint32_t oldest, std::uint32_t newest,
+                                    const Intrinsic_mesh& mesh);
   [[noreturn]] void fail(const std::string& why) const;
 
 private:
   void read(void* data, std::size_t bytes);
+  template <class Matrix>
+  Matrix any_matrix(Eigen::Index rows, Eigen::Index cols, const char* what);
   std::istream& in_;
   std::string path_, what_;
   std::uint64_t left_;
