@@ -13,6 +13,10 @@
 namespace CGAL {
 namespace Tangent_vector_fields {
 
+namespace {
+typedef Eigen::SparseMatrix<double> Sparse_matrix;
+} // namespace
+
 Completeness_check check_completeness(const Sparse_matrix& A, const Eigen::VectorXd& d, const Eigen::VectorXd& values,
                                       int kernel_dimension, int first_gap)
 {
