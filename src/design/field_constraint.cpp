@@ -142,6 +142,12 @@ Field_constraint Field_constraint::boundary_alignment(const Intrinsic_mesh& mesh
   return direction_in_face(mesh.edge_faces(edge)[0], {{q[0] - p[0], q[1] - p[1], q[2] - p[2]}});
 }
 
+namespace {
+// A divergence or curl constraint is at its vertex or edge unless it names a face: so that a
+// negative vertex or edge index is reported as such, not as a point of face -1.
+bool at_element(int element, int face) { return element >= 0 || face < 0; }
+} // namespace
+
 std::string Field_constraint::describe() const
 {
   std::ostringstream s;
@@ -151,10 +157,10 @@ std::string Field_constraint::describe() const
   case Constraint_kind::vector: s << "vector " << vector_text(vector) << " in face " << face; break;
   case Constraint_kind::direction: s << "direction " << vector_text(vector) << " in face " << face; break;
   case Constraint_kind::divergence:
-    s << "divergence " << value << (vertex >= 0 ? " at vertex " + std::to_string(vertex) : " in " + point);
+    s << "divergence " << value << (at_element(vertex, face) ? " at vertex " + std::to_string(vertex) : " in " + point);
     break;
   case Constraint_kind::curl:
-    s << "curl " << value << (edge >= 0 ? " at edge " + std::to_string(edge) : " in " + point);
+    s << "curl " << value << (at_element(edge, face) ? " at edge " + std::to_string(edge) : " in " + point);
     break;
   }
   return s.str();
@@ -246,7 +252,7 @@ std::vector<Constraint_row> constraint_rows(const Operator_matrices& ops, const 
   case Constraint_kind::divergence:
   {
     Constraint_row row;
-    if(c.vertex >= 0)
+    if(at_element(c.vertex, c.face))
     {
       check_index(c.vertex, mesh.number_of_vertices(), "vertex", c);
       if(mesh.is_isolated_vertex(c.vertex))
@@ -269,7 +275,7 @@ std::vector<Constraint_row> constraint_rows(const Operator_matrices& ops, const 
   case Constraint_kind::curl:
   {
     Constraint_row row;
-    if(c.edge >= 0)
+    if(at_element(c.edge, c.face))
     {
       check_index(c.edge, mesh.number_of_edges(), "edge", c);
       row = curl_row(ops, c.edge);

@@ -78,10 +78,11 @@ N_field_basis::N_field_basis(std::shared_ptr<const N_field_operators> operators,
   const N_field_operators& ops = *operators_;
   const int dimension = static_cast<int>(ops.masses().size());
   if(count < 1) throw Invalid_input("n-field basis: asked for " + std::to_string(count) + " elements");
-  if(count % 2) ++count;
+  // Checked before rounding up to a pair: ++INT_MAX would overflow past the check.
   if(count > dimension)
     throw Invalid_input("n-field basis: asked for " + std::to_string(count) + " elements but the space has dimension " +
                         std::to_string(dimension));
+  if(count % 2) ++count; // the dimension 2 nf is even
   const Matrix& kernel = ops.kernel();
   kernel_dimension_ = static_cast<int>(std::min<Eigen::Index>(kernel.cols(), count));
   const int wanted = count - kernel_dimension_;
@@ -128,6 +129,7 @@ N_field_basis::Vector N_field_basis::coefficients(const Vector& z) const
   if(z.size() != fields_.rows())
     throw Invalid_input("n-field basis: the field has " + std::to_string(z.size()) + " values, the basis " +
                         std::to_string(fields_.rows()));
+  if(!z.allFinite()) throw Invalid_input("n-field basis: the field has non-finite entries");
   return fields_.transpose() * operators_->masses().cwiseProduct(z);
 }
 
@@ -136,14 +138,18 @@ N_field_basis::Vector N_field_basis::field(const Vector& a) const
   if(a.size() > size())
     throw Invalid_input("n-field basis: " + std::to_string(a.size()) + " coefficients for a basis of " +
                         std::to_string(size()));
+  if(!a.allFinite()) throw Invalid_input("n-field basis: the coefficients have non-finite entries");
   return fields_.leftCols(a.size()) * a;
 }
 
 double N_field_basis::energy(const Vector& a, int m) const
 {
   if(m < 1) throw Invalid_input("n-field basis energy: m must be at least 1");
+  if(a.size() > size())
+    throw Invalid_input("n-field basis energy: " + std::to_string(a.size()) + " coefficients for a basis of " +
+                        std::to_string(size()));
   double e = 0;
-  for(Eigen::Index k = 0; k < a.size() && k < size(); ++k) e += std::pow(values_[k], m) * a[k] * a[k];
+  for(Eigen::Index k = 0; k < a.size(); ++k) e += std::pow(values_[k], m) * a[k] * a[k];
   return e;
 }
 

@@ -71,8 +71,15 @@ N_field_operators::N_field_operators(std::shared_ptr<const Operator_matrices> op
 {
   if(!operators_) throw Invalid_input("n-field operators: no operators given");
   if(n < 1) throw Invalid_input("n-field operators: n must be at least 1 (got " + std::to_string(n) + ")");
+  // Indices are integers k summing to n chi and angles are n times a face angle: beyond this
+  // the sums leave the range of int and n theta keeps no digit of theta's precision.
+  if(n > max_n)
+    throw Invalid_input("n-field operators: n must be at most " + std::to_string(max_n) + " (got " + std::to_string(n) +
+                        ")");
   const Intrinsic_mesh& m = mesh();
   std::vector<char> prescribed(m.number_of_vertices(), 0);
+  const int components = m.topology().number_of_components();
+  std::vector<long long> index_sum(components, 0);
   for(const auto& [v, k] : options_.singularities)
   {
     const std::string what = "n-field operators: the singularity of index " + std::to_string(k) + "/" +
@@ -82,6 +89,24 @@ N_field_operators::N_field_operators(std::shared_ptr<const Operator_matrices> op
     prescribed[v] = 1;
     if(m.is_isolated_vertex(v)) throw Invalid_input(what + ": the vertex is in no face");
     if(boundary_vertices()[v]) throw Invalid_input(what + ": the vertex is on the boundary");
+    index_sum[m.vertex_component(v)] += k;
+  }
+  if(options_.singularities.empty()) return;
+  // On a closed component the indices sum to n chi (Poincare-Hopf).  Free vertices take up
+  // the difference; when every vertex of the component is prescribed none can, and the
+  // connection would silently miss the holonomy of one of them.
+  std::vector<char> has_free(components, 0);
+  for(int v = 0; v < m.number_of_vertices(); ++v)
+    if(!m.is_isolated_vertex(v) && !prescribed[v]) has_free[m.vertex_component(v)] = 1;
+  for(int c = 0; c < components; ++c)
+  {
+    const Component_topology& t = m.topology().components[c];
+    const long long expected = static_cast<long long>(n) * t.euler_characteristic();
+    if(t.is_closed() && !has_free[c] && index_sum[c] != expected)
+      throw Invalid_input("n-field operators: every vertex of component " + std::to_string(c) +
+                          " has a prescribed singularity, and their indices sum to " + std::to_string(index_sum[c]) +
+                          "/" + std::to_string(n) + ", not n chi = " + std::to_string(expected) + "/" +
+                          std::to_string(n) + " (Poincare-Hopf)");
   }
 }
 
@@ -405,6 +430,11 @@ const N_field_operators::Matrix& N_field_operators::kernel() const
 
 N_field_operators::Vector N_field_operators::from_vectors(const Vector& vectors) const
 {
+  if(vectors.size() != 2 * mesh().number_of_faces())
+    throw Invalid_input("n-field: " + std::to_string(vectors.size()) + " frame coordinates for a mesh of " +
+                        std::to_string(mesh().number_of_faces()) + " faces");
+  // hypot(NaN, b) > 0 is false: a NaN vector would silently become the zero n-field.
+  if(!vectors.allFinite()) throw Invalid_input("n-field: the vectors have non-finite entries");
   const Eigen::Index nf = vectors.size() / 2;
   Vector z(vectors.size());
   for(Eigen::Index f = 0; f < nf; ++f)

@@ -21,6 +21,8 @@ Eigen::VectorXd vertex_turning(const N_field_operators& ops, const Eigen::Vector
   if(z.size() != 2 * mesh.number_of_faces())
     throw Invalid_input("n-field index: the field has " + std::to_string(z.size()) + " values, the mesh needs " +
                         std::to_string(2 * mesh.number_of_faces()));
+  // A NaN angle would round to an arbitrary integer index.
+  if(!z.allFinite()) throw Invalid_input("n-field index: the field has non-finite entries");
   std::vector<double> arg(mesh.number_of_faces());
   for(int f = 0; f < mesh.number_of_faces(); ++f) arg[f] = std::atan2(z[2 * f + 1], z[2 * f]);
 

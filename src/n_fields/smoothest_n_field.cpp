@@ -180,6 +180,10 @@ Eigen::VectorXd smoothest_n_field(const N_field_operators& ops, const Smoothest_
   double area = 0;
   for(int f = 0; f < nf; ++f) area += mesh.face_area(f);
 
+  // A NaN tolerance is never met: block Lanczos would run out of blocks and blame itself.
+  if(!(options.tolerance > 0 && options.tolerance < 1))
+    throw Invalid_input("smoothest n-field: the tolerance must lie in (0, 1) (got " + std::to_string(options.tolerance) +
+                        ")");
   if(options.alignment.size() > 0)
   {
     if(options.alignment.size() != 2 * nf)

@@ -87,6 +87,7 @@ struct Problem
 
   // Gershgorin bound of the largest eigenvalue of the standard form D^-1/2 A D^-1/2.
   double largest_eigenvalue_bound = 0;
+  Sparse_matrix abs_A; // |A|, for the roundoff of A x
 
   Problem(const Sparse_matrix& A_, const Eigen::VectorXd& d_, const Eigen::MatrixXd& kernel_original) : A(A_), d(d_)
   {
@@ -95,6 +96,7 @@ struct Problem
       for(Sparse_matrix::InnerIterator it(A, j); it; ++it)
         row_sums[it.row()] += std::abs(it.value()) / std::sqrt(d[it.row()] * d[j]);
     largest_eigenvalue_bound = row_sums.size() ? row_sums.maxCoeff() : 0.;
+    abs_A = A.cwiseAbs();
     sqrt_d = d.cwiseSqrt();
     inv_sqrt_d = sqrt_d.cwiseInverse();
     if(kernel_original.cols() > 0) kernel = orthonormal_columns(sqrt_d.asDiagonal() * kernel_original);
@@ -107,6 +109,21 @@ struct Problem
   double tolerance_for(double lambda, double tolerance) const
   {
     return std::max(tolerance, 64 * std::numeric_limits<double>::epsilon() * largest_eigenvalue_bound / std::abs(lambda));
+  }
+  // The same bound for each pair from its own vector: the roundoff of computing A x is
+  // eps |A| |x| entry by entry, in the norm of `residuals`.  Where A's large entries sit
+  // away from the vector -- a component of the mesh a million times smaller than the one
+  // the vector lives on -- it is far below `tolerance_for`, which would accept a pair that
+  // has only a few correct digits.  Vectors with roundoff on such entries (from a dense
+  // eigensolver) have a residual above this bound.
+  Eigen::VectorXd tolerances_for(const Eigen::VectorXd& values, const Eigen::MatrixXd& X, double tolerance) const
+  {
+    const Eigen::MatrixXd AX = abs_A * X.cwiseAbs();
+    Eigen::VectorXd t(values.size());
+    for(Eigen::Index i = 0; i < values.size(); ++i)
+      t[i] = std::max(tolerance, 64 * std::numeric_limits<double>::epsilon() * inv_sqrt_d.cwiseProduct(AX.col(i)).norm() /
+                                     (std::abs(values[i]) * sqrt_d.cwiseProduct(X.col(i)).norm()));
+    return t;
   }
   void deflate(Eigen::MatrixXd& Z) const
   {
@@ -126,7 +143,8 @@ struct Problem
   }
 };
 
-Eigenpairs dense_eigenpairs(const Problem& p, int count)
+// `subspace`, if given, receives the standard-form vectors of all the values returned.
+Eigenpairs dense_eigenpairs(const Problem& p, int count, Eigen::MatrixXd* subspace = nullptr)
 {
   const Eigen::Index n = p.sqrt_d.size(), c = p.kernel.cols();
   Eigen::MatrixXd B = p.inv_sqrt_d.asDiagonal() * Eigen::MatrixXd(p.A) * p.inv_sqrt_d.asDiagonal();
@@ -150,7 +168,43 @@ Eigenpairs dense_eigenpairs(const Problem& p, int count)
   result.vectors = p.inv_sqrt_d.asDiagonal() * Y;
   result.residuals = p.residuals(result.values.head(count), result.vectors);
   result.basis_size = static_cast<int>(n - c);
+  if(subspace) *subspace = c > 0 ? Eigen::MatrixXd(basis * B.leftCols(shown)) : Eigen::MatrixXd(B.leftCols(shown));
   return result;
+}
+
+// Subspace inverse iteration with Rayleigh-Ritz on the dense pairs (all `vectors` columns,
+// a few more than `count`), until the `count` lowest meet `accurate`.  The dense solver's
+// roundoff on the entries of the largest eigenvalues (a component far smaller than the
+// others) is damped by lambda / lambda_max per step, and the sparse products and solves do
+// not spread it back over the entries; the wanted pairs converge at the ratio of their
+// eigenvalue to that of the first pair beyond the subspace.
+template <class Accurate>
+void purify(const Sparse_matrix& A, const Problem& p, Eigenpairs& result, int count, const Accurate& accurate)
+{
+  // Below the spectrum (A is semi-definite, D positive), near its bottom.
+  const double shift = std::max(1e-3 * std::abs(result.values[0]), std::numeric_limits<double>::min());
+  Sparse_matrix K = A;
+  K.diagonal() += shift * p.d;
+  Sparse_ldlt_solver solver;
+  solver.analyze(K);
+  solver.factor(K, "the eigenproblem shifted below its spectrum");
+  Eigen::MatrixXd X = result.vectors;
+  for(int step = 0; step < 60; ++step)
+  {
+    Eigen::MatrixXd Z = p.sqrt_d.asDiagonal() * solver.solve(Eigen::MatrixXd(p.d.asDiagonal() * X));
+    p.deflate(Z);
+    X = p.inv_sqrt_d.asDiagonal() * orthonormal_columns(Z);
+    Eigen::MatrixXd a = X.transpose() * (A * X), m = X.transpose() * p.d.asDiagonal() * X;
+    a = (a + a.transpose()).eval() / 2;
+    m = (m + m.transpose()).eval() / 2;
+    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> small(a, m);
+    if(small.info() != Eigen::Success) throw Numerical_failure("eigenproblem: the Rayleigh-Ritz step failed");
+    X = X * small.eigenvectors();
+    result.values.head(X.cols()) = small.eigenvalues();
+    result.vectors = X.leftCols(count);
+    result.residuals = p.residuals(result.values.head(count), result.vectors);
+    if(step >= 1 && accurate()) return;
+  }
 }
 
 // ---------------------------------------------------------------------------
@@ -298,15 +352,16 @@ void lanczos_window(const Problem& p, const Sparse_matrix& K, const Sparse_ldlt_
         values[i] = sigma + 1 / theta[all[i]];
       }
       const Eigen::MatrixXd Y = Q.leftCols(complete) * S;
-      const Eigen::VectorXd residuals = p.residuals(values, p.inv_sqrt_d.asDiagonal() * Y);
+      const Eigen::MatrixXd X = p.inv_sqrt_d.asDiagonal() * Y;
+      const Eigen::VectorXd residuals = p.residuals(values, X);
+      const Eigen::VectorXd tolerances = p.tolerances_for(values, X, options.tolerance);
       bool window_ok = true;
-      for(std::size_t i = 0; i < in_window.size(); ++i)
-        window_ok = window_ok && residuals[i] <= p.tolerance_for(values[i], options.tolerance);
+      for(std::size_t i = 0; i < in_window.size(); ++i) window_ok = window_ok && residuals[i] <= tolerances[i];
       if(window_ok)
       {
         for(std::size_t i = 0; i < all.size(); ++i)
         {
-          if(i >= in_window.size() && !(residuals[i] <= p.tolerance_for(values[i], options.tolerance)))
+          if(i >= in_window.size() && !(residuals[i] <= tolerances[i]))
             continue; // carry only if accurate
           Ritz_set& target = i < in_window.size() ? window : carry;
           target.values.push_back(values[i]);
@@ -475,51 +530,15 @@ Eigenpairs sliced_eigenpairs(const Sparse_matrix& A, const Problem& p, int count
   result.operator_applications = applications;
   result.completeness = check;
   result.complete_below = static_cast<int>(found.values.size()) > count ? found.values[order[count]] : lo;
+  const Eigen::VectorXd tolerances = p.tolerances_for(result.values, result.vectors, options.tolerance);
   for(int i = 0; i < count; ++i)
-    if(!(result.residuals[i] <= p.tolerance_for(result.values[i], options.tolerance)))
+    if(!(result.residuals[i] <= tolerances[i]))
       throw Numerical_failure("spectrum slicing: an eigenpair misses the tolerance (residual " +
                               std::to_string(result.residuals[i]) + ")");
   return result;
 }
 
 } // namespace
-
-Completeness_check check_completeness(const Sparse_matrix& A, const Eigen::VectorXd& d, const Eigen::VectorXd& values,
-                                      int kernel_dimension, int first_gap)
-{
-  const Eigen::Index m = values.size();
-  Completeness_check check;
-  if(m == 0)
-  {
-    check.shift = 0;
-    check.expected = check.inertia = 0;
-    return check;
-  }
-  // The shift goes in the widest gap (relative to the eigenvalue) among the last
-  // values, so that it is far from every eigenvalue and LDL^T without pivoting is
-  // stable; after the last value when there is no gap to choose from.
-  Eigen::Index below = m; // number of values below the shift
-  double best = -1;
-  for(Eigen::Index j = std::max<Eigen::Index>(first_gap < 0 ? m - 1 : first_gap, 1); j < m; ++j)
-  {
-    const double gap = (values[j] - values[j - 1]) / std::max(std::abs(values[j]), 1e-300);
-    if(gap > best)
-    {
-      best = gap;
-      below = j;
-    }
-  }
-  if(below == m || best <= 1e-8)
-  {
-    below = m;
-    check.shift = values[m - 1] * (1 + 1e-6) + 1e-12 * std::abs(values[0]);
-  }
-  else
-    check.shift = 0.5 * (values[below - 1] + values[below]);
-  check.expected = kernel_dimension + static_cast<int>(below);
-  check.inertia = count_eigenvalues_below(A, d, check.shift);
-  return check;
-}
 
 Eigenpairs lowest_eigenpairs(const Sparse_matrix& A, const Eigen::VectorXd& d, int count, const Eigen::MatrixXd& kernel,
                              const Eigensolver_options& options)
@@ -532,6 +551,10 @@ Eigenpairs lowest_eigenpairs(const Sparse_matrix& A, const Eigen::VectorXd& d, i
     throw Invalid_input("asked for " + std::to_string(count) + " eigenpairs but the space has dimension " +
                         std::to_string(n - c));
   if(n > 0 && !(d.minCoeff() > 0)) throw Invalid_input("eigenproblem: the masses must be positive");
+  // A NaN tolerance would never be met: the eigensolver would fail after all its restarts
+  // with a misleading "misses the tolerance"; 0 or less would ask for the impossible.
+  if(!(options.tolerance > 0 && options.tolerance < 1))
+    throw Invalid_input("eigenproblem: the tolerance must lie in (0, 1) (got " + std::to_string(options.tolerance) + ")");
   const Problem p(A, d, kernel);
   if(count == 0)
   {
@@ -543,22 +566,29 @@ Eigenpairs lowest_eigenpairs(const Sparse_matrix& A, const Eigen::VectorXd& d, i
   const bool dense =
       options.allow_dense && (n <= options.dense_size || count + 3 * options.block_size > (n - c) / 3);
   if(!dense) return sliced_eigenpairs(A, p, count, options);
-  Eigenpairs result = dense_eigenpairs(p, count);
+  Eigen::MatrixXd subspace;
+  Eigenpairs result = dense_eigenpairs(p, count, &subspace);
+  // A dense eigensolver leaves roundoff of size eps |x| on every entry, which the largest
+  // eigenvalues amplify: with a spectrum spread over many orders (components of very
+  // different sizes) the low pairs keep only a few digits.  Inverse iteration cleans them.
+  auto accurate = [&] {
+    const Eigen::VectorXd tolerances = p.tolerances_for(result.values.head(count), result.vectors, options.tolerance);
+    for(int i = 0; i < count; ++i)
+      if(!(result.residuals[i] <= tolerances[i])) return false;
+    return true;
+  };
+  if(!accurate())
+  {
+    result.vectors = p.inv_sqrt_d.asDiagonal() * subspace;
+    purify(A, p, result, count, accurate);
+    if(!accurate())
+      throw Numerical_failure("eigenproblem: an eigenpair misses the tolerance after refinement (residual " +
+                              std::to_string(result.residuals.maxCoeff()) + ")");
+  }
   // Complete by construction; the inertia count is recorded all the same.
   if(count < n - c) result.completeness = check_completeness(A, d, result.values, c, count);
   result.values.conservativeResize(count);
   return result;
-}
-
-int count_eigenvalues_below(const Sparse_matrix& A, const Eigen::VectorXd& d, double tau)
-{
-  Sparse_matrix K = A;
-  K.diagonal() -= tau * d;
-  // LDL^T without pivoting: fine for these shifted Laplacians unless tau hits an
-  // eigenvalue, which the callers avoid by placing tau in a spectral gap.
-  Sparse_ldlt_solver ldlt;
-  ldlt.factor(K, "the shifted matrix of the inertia count");
-  return ldlt.negative_pivots();
 }
 
 } // namespace Tangent_vector_fields

@@ -460,34 +460,12 @@ Eigenfield_basis::Matrix Eigenfield_basis::decompress(const Compressed_fields& c
 
 Eigenfield_basis::Vector Eigenfield_basis::rest(const Vector& v) const { return v - field(coefficients(v)); }
 
-double Eigenfield_basis::dirichlet_energy(const Vector& a) const
-{
-  const Eigen::Index n = std::min<Eigen::Index>(a.size(), size());
-  return (values_.head(n).array() * a.head(n).array().square()).sum();
-}
-
-double Eigenfield_basis::biharmonic_energy(const Vector& a) const
-{
-  const Eigen::Index n = std::min<Eigen::Index>(a.size(), size());
-  return (values_.head(n).array().square() * a.head(n).array().square()).sum();
-}
-
-Eigenfield_basis::Matrix Eigenfield_basis::band_energies(const Vector& a, const std::vector<double>& edges) const
-{
-  const int bands = edges.size() < 2 ? 0 : static_cast<int>(edges.size()) - 1;
-  Matrix energy = Matrix::Zero(bands, 3);
-  for(Eigen::Index k = 0; k < std::min<Eigen::Index>(a.size(), size()); ++k)
-    for(int b = 0; b < bands; ++b)
-      if(values_[k] >= edges[b] && values_[k] < edges[b + 1])
-      {
-        energy(b, static_cast<int>(order_[k].type)) += a[k] * a[k];
-        break;
-      }
-  return energy;
-}
-
 Eigenfield_basis::Vector Eigenfield_basis::filter(const Vector& v, const Spectral_filter& f) const
 {
+  // The harmonic and rest factors are not seen by the check of the transfer below when the
+  // mesh has no harmonic fields or the basis represents every field: test them here.
+  if(!std::isfinite(f.harmonic_factor) || !std::isfinite(f.rest_factor))
+    throw Invalid_input("the filter's harmonic and rest factors must be finite");
   const Vector a = coefficients(v);
   Vector b = a;
   for(int k = 0; k < size(); ++k)
@@ -503,6 +481,8 @@ Eigenfield_basis::Vector Eigenfield_basis::filter(const Vector& v, const Spectra
   if(!b.allFinite()) throw Invalid_input("the filter's transfer function returned a non-finite value");
   Vector result = field(b);
   if(f.rest_factor != 0) result += f.rest_factor * (v - field(a));
+  // Finite factors can still overflow (a transfer of 1e300 on a large coefficient).
+  if(!result.allFinite()) throw Invalid_input("the filter's result is not finite: its transfer is too large");
   return result;
 }
 

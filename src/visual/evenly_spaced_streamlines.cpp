@@ -10,12 +10,20 @@
 
 #include <CGAL/Tangent_vector_fields/errors.h>
 
+#include <algorithm>
+#include <cmath>
 #include <deque>
+#include <string>
 #include <utility>
 
 namespace CGAL {
 namespace Tangent_vector_fields {
 namespace internal {
+
+namespace {
+// Streamlines an unlimited call may fill a surface with (area / separation^2).
+const double max_expected_streamlines = 1e7;
+} // namespace
 
 std::vector<Streamline> evenly_spaced_streamlines(const Streamline_walker& walker, const Evenly_spaced_options& o)
 {
@@ -26,6 +34,18 @@ std::vector<Streamline> evenly_spaced_streamlines(const Streamline_walker& walke
     throw Invalid_input("evenly spaced streamlines: test_ratio must lie in (0, 1]");
   if(o.tracing.branch != 0)
     throw Invalid_input("evenly spaced streamlines: tracing.branch must be 0 (every family is traced)");
+  if(!(o.minimum_length_ratio >= 0) || !std::isfinite(o.minimum_length_ratio))
+    throw Invalid_input("evenly spaced streamlines: minimum_length_ratio must be finite and non-negative");
+  if(o.maximum_streamlines < 0)
+    throw Invalid_input("evenly spaced streamlines: maximum_streamlines must not be negative (0: no limit)");
+  check_streamline_options(o.tracing);
+  // The streamlines fill the surface: about area / separation^2 of them, each sampled every
+  // quarter separation.  Far more than any picture holds means a separation in the wrong
+  // unit: it would run for ever, and even a few lines would exhaust the memory with samples.
+  const double expected_lines = walker.total_area / (separation * separation);
+  if(!(expected_lines <= max_expected_streamlines))
+    throw Invalid_input("evenly spaced streamlines: the separation is too small for the surface (about " +
+                        short_number(expected_lines) + " streamlines would fill it, at most 1e7)");
   const double test_distance = o.test_ratio * separation;
   const double sample_step = test_distance / 2;
   const double seed_distance = 0.9 * separation;
@@ -35,7 +55,7 @@ std::vector<Streamline> evenly_spaced_streamlines(const Streamline_walker& walke
   Sample_grid grid(separation, walker.box_min);
   std::mt19937_64 gen(o.random_seed);
   const std::vector<double> cumulative = walker.cumulative_areas();
-  const long random_candidates = static_cast<long>(std::ceil(4 * walker.total_area / (separation * separation))) + 16;
+  const long random_candidates = static_cast<long>(std::ceil(4 * expected_lines)) + 16;
 
   std::vector<Streamline> result;
   std::deque<std::pair<int, std::vector<Segment_record>>> queue; // accepted lines to seed beside

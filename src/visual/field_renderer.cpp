@@ -152,10 +152,21 @@ void Field_renderer::Impl::compose(cairo_t* cr) const
   }
 }
 
-void Field_renderer::Impl::check_size() const
+void Field_renderer::Impl::check_options() const
 {
   if(options.width < 16 || options.height < 16 || options.width > 16384 || options.height > 16384)
     throw Invalid_input("renderer: image size must be between 16 and 16384 pixels");
+  if(options.supersampling < 1 || options.supersampling > 4)
+    throw Invalid_input("renderer: supersampling must be 1 to 4 (got " + std::to_string(options.supersampling) + ")");
+  // A NaN or infinite camera setting makes every projected point NaN: an empty picture, or
+  // pixel coordinates that no integer holds.
+  const Camera& c = options.camera;
+  bool finite = std::isfinite(c.azimuth) && std::isfinite(c.elevation) && std::isfinite(c.field_of_view) &&
+                std::isfinite(options.ambient) && std::isfinite(options.specular);
+  for(int i = 0; i < 3; ++i) finite = finite && std::isfinite(c.view_direction[i]) && std::isfinite(c.up[i]);
+  if(!finite) throw Invalid_input("renderer: the camera and lighting settings must be finite numbers");
+  if(!(c.zoom > 0) || !std::isfinite(c.zoom)) throw Invalid_input("renderer: the zoom must be positive and finite");
+  if(!(c.margin >= 0 && c.margin < 0.5)) throw Invalid_input("renderer: the margin must lie in [0, 0.5)");
 }
 
 Field_renderer::Field_renderer(std::shared_ptr<const Intrinsic_mesh> mesh, const Render_options& options)
@@ -249,7 +260,7 @@ void Field_renderer::clear_overlays()
 
 void Field_renderer::write_png(const std::string& filename) const
 {
-  impl_->check_size();
+  impl_->check_options();
   cairo_surface_t* target = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, impl_->options.width, impl_->options.height);
   cairo_t* cr = cairo_create(target);
   try
@@ -271,7 +282,7 @@ void Field_renderer::write_png(const std::string& filename) const
 
 void Field_renderer::write_svg(const std::string& filename) const
 {
-  impl_->check_size();
+  impl_->check_options();
   cairo_surface_t* target = cairo_svg_surface_create(filename.c_str(), impl_->options.width, impl_->options.height);
   if(cairo_surface_status(target) != CAIRO_STATUS_SUCCESS)
   {

@@ -147,7 +147,7 @@ struct Field_renderer::Impl
   void set_values(std::vector<double> v, bool vertices, const Scalar_colouring& c);
   Colour value_colour(double x) const;
   void compose(cairo_t* cr) const;
-  void check_size() const;
+  void check_options() const; // image size, sampling, camera: before any drawing
 
   // field_raster.cpp
   void set_up_camera() const;

@@ -57,12 +57,22 @@ std::vector<Streamline> fur_strokes(const internal::Streamline_walker& walker, c
   if(o.branch < -1 || o.branch >= walker.n)
     throw Invalid_input("fur: branch " + std::to_string(o.branch) + " asked of a field of " +
                         std::to_string(walker.n) + " vector(s) per face (-1: all)");
+  internal::check_streamline_options(o.tracing);
+  // Every stroke is kept in memory: a count beyond this is a mistake (a density in the wrong
+  // unit), and llround of an infinite or huge product is undefined.
+  const double max_strokes = 1e7;
   long count = o.number_of_strokes;
   if(count <= 0)
   {
-    if(!(o.density > 0)) throw Invalid_input("fur: give number_of_strokes or a positive density");
-    count = static_cast<long>(std::llround(o.density * walker.total_area));
+    if(!(o.density > 0) || !std::isfinite(o.density))
+      throw Invalid_input("fur: give number_of_strokes or a positive finite density");
+    const double expected = o.density * walker.total_area;
+    if(!(expected <= max_strokes))
+      throw Invalid_input("fur: the density gives " + internal::short_number(expected) + " strokes, more than 1e7");
+    count = static_cast<long>(std::llround(expected));
   }
+  if(count > max_strokes)
+    throw Invalid_input("fur: " + std::to_string(count) + " strokes asked, more than 1e7");
   const int first = o.branch < 0 ? 0 : o.branch, last = o.branch < 0 ? walker.n - 1 : o.branch;
   std::mt19937_64 gen(o.random_seed);
   const std::vector<double> cumulative = walker.cumulative_areas();

@@ -489,11 +489,12 @@ Position Streamline_walker::start_position(int face, const Barycentric& beta, in
 
 Walk_settings Streamline_walker::settings(const Streamline_options& o, double sign) const
 {
+  check_streamline_options(o);
   Walk_settings s;
   s.sign = sign;
   const double l = to_absolute(o.maximum_length, o.length_unit);
   s.maximum_length = l > 0 ? l : infinity;
-  s.maximum_segments = std::max(1, o.maximum_segments);
+  s.maximum_segments = o.maximum_segments;
   s.zero_threshold = o.zero_field_tolerance * maximum_magnitude;
   return s;
 }

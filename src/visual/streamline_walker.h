@@ -17,6 +17,7 @@
 #include <limits>
 #include <memory>
 #include <random>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -285,6 +286,13 @@ private:
 
 /// Evenly spaced streamlines (evenly_spaced_streamlines.cpp).
 std::vector<Streamline> evenly_spaced_streamlines(const Streamline_walker& walker, const Evenly_spaced_options& o);
+
+/// `x` with 3 significant digits ("1.03e+18"), for messages.
+std::string short_number(double x);
+
+/// \throws Invalid_input for options no trace can honour: a NaN length limit, fewer than one
+/// segment, a tolerance that is negative or not finite.
+void check_streamline_options(const Streamline_options& o);
 
 } // namespace internal
 } // namespace Tangent_vector_fields

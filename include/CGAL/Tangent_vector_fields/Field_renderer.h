@@ -214,7 +214,9 @@ public:
   /// Removes all streamlines, arrows, glyphs and singularities.
   void clear_overlays();
 
-  /// \throws Invalid_input if the file cannot be written.
+  /// \throws Invalid_input if the file cannot be written, or for options no picture can have:
+  ///         a size outside 16 to 16384 pixels, supersampling outside 1 to 4, a non-finite
+  ///         camera or lighting setting, a zoom that is not positive, a margin outside [0, 0.5).
   void write_png(const std::string& filename) const;
   void write_svg(const std::string& filename) const;
 

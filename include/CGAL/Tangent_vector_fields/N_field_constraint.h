@@ -125,7 +125,8 @@ struct N_field_constraint
 
 /// The rows of `constraint` on the power representation (`2nf` unknowns).
 /// \throws Invalid_input for an index out of range, non-finite numbers, barycentric
-///         coordinates that are negative or do not sum to 1 (1e-9), a zero vector or direction, one normal to its face, a singularity at a boundary or isolated
+///         coordinates that are negative or do not sum to 1 (1e-9), a zero direction (a zero
+///         vector is valid: the field vanishes there), one normal to its face, a singularity at a boundary or isolated
 ///         vertex, or one whose turning per face `|phi|` is `pi` or more.
 std::vector<Constraint_row> constraint_rows(const N_field_operators& operators, const N_field_constraint& constraint);
 

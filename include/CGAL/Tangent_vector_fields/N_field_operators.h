@@ -75,8 +75,12 @@ public:
   typedef Eigen::VectorXd Vector;
   typedef Eigen::MatrixXd Matrix;
 
-  /// \throws Invalid_input if `n < 1`, or a prescribed singularity is not at an interior
-  ///         vertex, or a vertex is prescribed twice.
+  /// The largest n accepted (indices `k` are `int`s summing to `n chi`).
+  static constexpr int max_n = 1 << 20;
+
+  /// \throws Invalid_input if `n < 1` or `n > max_n`, or a prescribed singularity is not at an
+  ///         interior vertex, or a vertex is prescribed twice, or every vertex of a closed
+  ///         component is prescribed and their indices do not sum to `n chi`.
   N_field_operators(std::shared_ptr<const Operator_matrices> operators, int n,
                     const N_field_options& options = N_field_options());
   ~N_field_operators();
@@ -145,6 +149,7 @@ public:
   const Matrix& kernel() const;
 
   /// The n-field of vectors (frame coordinates, `2nf`): `z_f = |u_f| (u_f / |u_f|)^n`.
+  /// \throws Invalid_input for another size or non-finite entries.
   Vector from_vectors(const Vector& vectors) const;
   /// The first of the n vectors of each face (angle `arg(z_f) / n` in `(-pi/n, pi/n]`, length `|z_f|`).
   Vector to_vectors(const Vector& z) const;

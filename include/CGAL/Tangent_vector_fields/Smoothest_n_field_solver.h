@@ -32,7 +32,7 @@ struct Smoothest_n_field_options
 /// minimiser of `E_D(z)` over `|z|_MX = 1` (its magnitude varies and vanishes at the
 /// singularities).  With a guide `g`: the minimiser of `E_D(z) + s |z - g|^2_MX`, one sparse
 /// solve.
-/// \throws Invalid_input for a guide of the wrong size, non-finite, or a weight <= 0.
+/// \throws Invalid_input for a guide of the wrong size, non-finite, a weight <= 0, or a tolerance outside (0, 1).
 Eigen::VectorXd smoothest_n_field(const N_field_operators& operators,
                                   const Smoothest_n_field_options& options = Smoothest_n_field_options());
 

@@ -239,8 +239,9 @@ public:
   /// to the face's corners in local order (`Intrinsic_mesh::face_vertices`); they are
   /// clamped to be non-negative and normalised.  The streamline leaves the seed along
   /// vector `options.branch` of the face.
-  /// \throws Invalid_input for a face index out of range, non-finite coordinates, or a
-  ///         branch outside `[0, n)`.
+  /// \throws Invalid_input for a face index out of range, non-finite coordinates, a
+  ///         branch outside `[0, n)`, a NaN `maximum_length`, `maximum_segments` below 1, or
+  ///         a negative or non-finite `zero_field_tolerance` or `loop_closure_tolerance`.
   Streamline trace(int face, const std::array<double, 3>& barycentric,
                    const Streamline_options& options = Streamline_options()) const;
   /// Traces from the 3D point `point`, projected onto face `face` (and clamped into it).
@@ -269,7 +270,10 @@ public:
   /// families; the branch numbers cannot tell, since each face numbers its vectors from its
   /// own first one and a streamline turning around a singularity changes family.
   /// \throws Invalid_input for a separation that is not positive, a `test_ratio` outside
-  ///         `(0, 1]`, or `tracing.branch` other than 0.
+  ///         `(0, 1]`, `tracing.branch` other than 0, a negative or non-finite
+  ///         `minimum_length_ratio`, a negative `maximum_streamlines`, bad `tracing` options
+  ///         (as `trace`), or a separation so small that the surface would take more than
+  ///         1e7 streamlines (area / separation^2).
   std::vector<Streamline> evenly_spaced(const Evenly_spaced_options& options = Evenly_spaced_options()) const;
 
   /// Short strokes traced forward from random roots, uniformly distributed by area: per
@@ -277,7 +281,8 @@ public:
   /// (`Fur_options::branch`), consecutive in the result.  Strokes of zero length (roots in
   /// zero-field faces) are left out.
   /// \throws Invalid_input for a length that is not positive, neither a count nor a
-  ///         density, or a branch outside `[-1, n)`.
+  ///         positive finite density, more than 1e7 strokes, a branch outside `[-1, n)`, or
+  ///         bad `tracing` options (as `trace`).
   std::vector<Streamline> fur(const Fur_options& options) const;
 
 private:
