@@ -6,6 +6,7 @@
 #include "tool.h"
 
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 
@@ -50,7 +51,7 @@ void write_coefficient_file(const std::string& path, const Coefficient_file& fil
   if(!out) throw Tool_error("writing '" + path + "' failed");
 }
 
-Coefficient_file read_coefficient_file(std::istream& in, std::uint64_t /*bytes*/, const std::string& path)
+Coefficient_file read_coefficient_file(std::istream& in, std::uint64_t bytes, const std::string& path)
 {
   const std::string what = "coefficient file '" + path + "': ";
   char magic[8];
@@ -61,11 +62,22 @@ Coefficient_file read_coefficient_file(std::istream& in, std::uint64_t /*bytes*/
   if(!get_binary(in, version) || version != coefficient_version)
     throw Tool_error(what + "format version " + std::to_string(version) + ", this tool reads version 1");
   if(!get_binary(in, bom) || bom != byte_order_mark) throw Tool_error(what + "written with another byte order");
-  if(!get_binary(in, file.faces) || !get_binary(in, k) || !get_binary(in, fields) || fields != 1 || k > (1u << 28))
+  if(!get_binary(in, file.faces) || !get_binary(in, k) || !get_binary(in, fields) || fields != 1)
     throw Tool_error(what + "bad header");
+  if(k == 0) throw Tool_error(what + "no coefficients");
+  // The header, the coefficients and the end marker: checked against the size before the
+  // coefficients are allocated, so that a corrupt count cannot ask for gigabytes.
+  const std::uint64_t header_bytes = 8 + 4 * 4 + 8 * 6; // magic; version, mark, count, fields; faces, signature, error
+  if(bytes < header_bytes + 8 || (bytes - header_bytes - 8) / 8 < k)
+    throw Tool_error(what + "truncated (" + std::to_string(k) + " coefficients announced, " + std::to_string(bytes) +
+                     " bytes)");
   for(double& s : file.signature)
     if(!get_binary(in, s)) throw Tool_error(what + "truncated");
   if(!get_binary(in, file.relative_error)) throw Tool_error(what + "truncated");
+  for(double s : file.signature)
+    if(!std::isfinite(s)) throw Tool_error(what + "non-finite basis signature");
+  if(!(file.relative_error >= 0 && file.relative_error <= 1))
+    throw Tool_error(what + "the relative error at compression is not in [0, 1]");
   file.coefficients.resize(k);
   char end[8];
   if(!in.read(reinterpret_cast<char*>(file.coefficients.data()), static_cast<std::streamsize>(sizeof(double) * k)) ||

@@ -13,6 +13,13 @@
 #include <unistd.h>
 #include <vector>
 
+// UBSan's options unless UBSAN_OPTIONS says otherwise: every report ends the run (libFuzzer
+// then keeps the input), except those ubsan.supp silences in a library's headers.
+extern "C" const char* __ubsan_default_options()
+{
+  return "halt_on_error=1:print_stacktrace=1:suppressions=" TVF_UBSAN_SUPPRESSIONS;
+}
+
 namespace tvf_fuzz {
 
 std::shared_ptr<const TVF::Operator_matrices> torus_operators()
