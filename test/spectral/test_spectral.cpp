@@ -13,6 +13,8 @@
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 
+#include <cstring>
+
 namespace TVF = CGAL::Tangent_vector_fields;
 using namespace tvf_test;
 
@@ -456,6 +458,54 @@ TEST(SpectralBasis, SaveAndLoadRoundTripAndRefuseOtherMeshes)
   std::remove(path.c_str());
   std::remove((path + ".short").c_str());
   std::remove((path + ".version").c_str());
+}
+
+// fuzz_tvfb: a file with an eigenvalue made 0 (sizes, marker and mesh identity intact) loaded,
+// and its coefficients were infinite.  Whatever is not a basis is refused with the reason.
+TEST(SpectralBasis, LoadRefusesCorruptBasesThatPassTheSizeChecks)
+{
+  Mesh torus = make_torus(16, 9);
+  Basis basis(torus, TVF::parameters::number_of_eigenfields(30));
+  const TVF::Eigenfield_basis& b = basis.basis();
+  const std::string path = ::testing::TempDir() + "tvf_corrupt_basis.tvfb";
+  basis.save(path);
+  std::ifstream in(path, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // Offsets (doc/manual.md): a 64-byte header, then matrices of 16 bytes of sizes and their doubles.
+  const std::size_t de = b.exact_eigenfunctions().cols(), dc = b.coexact_eigenfunctions().cols();
+  ASSERT_GT(de, 0u);
+  const std::size_t exact_values = 64 + 16, exact_functions = exact_values + 8 * de + 16;
+  const std::size_t table = exact_functions + 8 * b.exact_eigenfunctions().size() + 16 + 8 * dc + 16 +
+                            8 * b.coexact_eigenfunctions().size() + 16 + 8 * b.harmonic_fields().size() + 8;
+  const auto load_error = [&](std::string corrupt) {
+    std::ofstream(path, std::ios::binary | std::ios::trunc) << corrupt;
+    try
+    {
+      Basis::load(torus, path);
+    }
+    catch(const TVF::Invalid_input& e)
+    {
+      return std::string(e.what());
+    }
+    return std::string("loaded");
+  };
+  const auto with_double = [&](std::size_t offset, double x) {
+    std::string corrupt = bytes;
+    std::memcpy(&corrupt[offset], &x, 8);
+    return corrupt;
+  };
+  const std::string prefix = "cannot load the spectral basis from '" + path + "': ";
+  EXPECT_EQ(load_error(bytes), "loaded");
+  EXPECT_EQ(load_error(with_double(exact_values, 0.)), prefix + "an exact eigenvalue is not positive");
+  EXPECT_EQ(load_error(with_double(exact_values, -2.)), prefix + "an exact eigenvalue is not positive");
+  double first;
+  std::memcpy(&first, &bytes[exact_functions], 8);
+  const std::string scaled = load_error(with_double(exact_functions, 1e3 * first + 1));
+  EXPECT_NE(scaled.find("instead of 1 (the file is corrupt)"), std::string::npos) << scaled;
+  std::string repeated = bytes;
+  repeated.replace(table + 5 * 2, 5, bytes.substr(table + 5, 5)); // element 2 := element 1
+  EXPECT_EQ(load_error(repeated), prefix + "element 2 is listed twice");
+  std::remove(path.c_str());
 }
 
 TEST(SpectralBasis, SameSpectrumAfterScalingByExtremeFactors)
