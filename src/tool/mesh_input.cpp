@@ -19,6 +19,7 @@
 #include <cstring>
 #include <fstream>
 #include <set>
+#include <sstream>
 
 namespace tvf_tool {
 
@@ -67,6 +68,26 @@ bool read_ply_face_properties(const std::string& path, std::vector<std::pair<std
   return true;
 }
 
+// CGAL 5.5's PLY reader adds a "property" to the last element read without checking that
+// there is one: a property line before any element line crashes it.  Such a header is refused
+// here first (found by test/fuzz's mesh target).
+bool ply_properties_follow_elements(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  bool element_seen = false;
+  for(int n = 0; n < 100000 && std::getline(in, line); ++n)
+  {
+    std::istringstream words(line);
+    std::string keyword;
+    words >> keyword;
+    if(keyword == "end_header") break;
+    if(keyword == "element") element_seen = true;
+    if(keyword == "property" && !element_seen) return false;
+  }
+  return true;
+}
+
 } // namespace
 
 std::vector<std::string> Mesh_file::face_field_names() const
@@ -108,6 +129,9 @@ Mesh_file read_mesh_file(const std::string& path)
   if(!formats.count(ext))
     throw Tool_error("'" + path + "': unknown mesh format" + (ext.empty() ? std::string() : " '." + ext + "'") +
                      " (the tool reads .off, .obj, .ply, .stl and .ts)");
+  if(ext == "ply" && !ply_properties_follow_elements(path))
+    throw Tool_error("cannot read a polygon mesh from '" + path +
+                     "' (malformed PLY header: a property before any element)");
   Mesh_file file;
   bool ok = false;
   try

@@ -160,3 +160,21 @@ TEST(MeshInput, NegativeOffFacetSizeIsRefused)
     EXPECT_NE(std::string(e.what()).find("cannot read a polygon mesh from"), std::string::npos) << e.what();
   }
 }
+
+// fuzz_mesh: CGAL's PLY reader crashed (a null dereference) on a property line before any
+// element line; the header is checked before CGAL reads the file.
+TEST(MeshInput, PlyPropertyBeforeAnyElementIsRefused)
+{
+  const std::string path = file_with("property_first.ply", "ply\nformat ascii 1.0\nproperty double x\n"
+                                                           "element vertex 1\nend_header\n0\n");
+  try
+  {
+    read_mesh_file(path);
+    FAIL() << "accepted";
+  }
+  catch(const Tool_error& e)
+  {
+    EXPECT_EQ(std::string(e.what()), "cannot read a polygon mesh from '" + path +
+                                         "' (malformed PLY header: a property before any element)");
+  }
+}
