@@ -43,14 +43,15 @@ for t in "${targets[@]}"; do
   mkdir -p "$corpus" "$findings"
   echo "== fuzz_$t: $seconds s"
   status=0
+  start=$SECONDS
   # The working corpus first (new inputs go there), the seeds of the repository second.
   build-fuzz/fuzzers/fuzz_"$t" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=512 -max_len="${max_len[$t]}" \
     -print_final_stats=1 -artifact_prefix="$findings/" "$corpus" "test/fuzz/corpus/$t" >"$log" 2>&1 || status=$?
   executions=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
   rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -1)
-  time_taken=$(sed -n 's/.*Done [0-9]* runs in \([0-9]*\) second.*/\1/p' "$log" | tail -1)
+  time_taken=$((SECONDS - start)) # less than SECONDS if it stopped at a finding
   found=$(find "$findings" -type f | wc -l)
-  table+=$'\n'$(printf "%-16s %10s %8s %7s %7s %9s" "$t" "${executions:-?}" "${time_taken:-$seconds}" "${rate:-?}" \
+  table+=$'\n'$(printf "%-16s %10s %8s %7s %7s %9s" "$t" "${executions:-?}" "$time_taken" "${rate:-?}" \
                        "$(find "$corpus" -type f | wc -l)" "$found")
   if [ "$status" -ne 0 ]; then
     failed+=("$t")

@@ -359,7 +359,7 @@ std::string triangle_vtp(const std::string& connectivity, const std::string& off
 
 } // namespace
 
-// fuzz_rawfield: a header announcing 10^12 faces allocated them all (77 GB) before reading.
+// fuzz_rawfield: a header announcing 3.2 billion vectors allocated them all (77 GB) before reading one.
 TEST(FieldFiles, RawFieldCountBeyondItsNumbersIsRefusedWithoutAllocatingIt)
 {
   const auto read = [](std::istream& in) { TVF::read_raw_field(in); };
