@@ -71,23 +71,34 @@ bool read_ply_face_properties(const std::string& path, std::vector<std::pair<std
 }
 
 // CGAL 5.5's PLY reader adds a "property" to the last element read without checking that
-// there is one: a property line before any element line crashes it.  Such a header is refused
-// here first (found by test/fuzz's mesh target).
-bool ply_properties_follow_elements(const std::string& path)
+// there is one (a property line before any element line crashes it), and reads an element's
+// count as std::size_t ("-1" becomes 2^64 - 1, items it then loops over).  Returns the reason
+// to refuse such a header, or "".  Found by test/fuzz's mesh target.
+std::string ply_header_defect(const std::string& path)
 {
-  std::ifstream in(path, std::ios::binary);
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  const std::streamoff bytes = in.tellg();
+  in.seekg(0);
   std::string line;
   bool element_seen = false;
   for(int n = 0; n < 100000 && std::getline(in, line); ++n)
   {
     std::istringstream words(line);
-    std::string keyword;
+    std::string keyword, name, count;
     words >> keyword;
     if(keyword == "end_header") break;
-    if(keyword == "element") element_seen = true;
-    if(keyword == "property" && !element_seen) return false;
+    if(keyword == "property" && !element_seen) return "a property before any element";
+    if(keyword != "element") continue;
+    element_seen = true;
+    words >> name >> count;
+    // Every item of an element takes a byte at least, unless it has no properties: a count
+    // up to the file's size is plenty.
+    if(count.empty() || count.size() > 18 || count.find_first_not_of("0123456789") != std::string::npos ||
+       std::stoll(count) > bytes)
+      return "element '" + name.substr(0, 40) + "' has the count '" + count.substr(0, 40) +
+             "', not a whole number up to the file's size";
   }
-  return true;
+  return "";
 }
 
 // The numbers at the start of a line of an OFF file, read as CGAL's scanner reads them: up to
@@ -196,9 +207,11 @@ Mesh_file read_mesh_file(const std::string& path)
     const std::string defect = off_facet_defect(path);
     if(!defect.empty()) throw Tool_error("cannot read a polygon mesh from '" + path + "' (malformed OFF: " + defect + ")");
   }
-  if(ext == "ply" && !ply_properties_follow_elements(path))
-    throw Tool_error("cannot read a polygon mesh from '" + path +
-                     "' (malformed PLY header: a property before any element)");
+  if(ext == "ply")
+  {
+    const std::string defect = ply_header_defect(path);
+    if(!defect.empty()) throw Tool_error("cannot read a polygon mesh from '" + path + "' (malformed PLY header: " + defect + ")");
+  }
   Mesh_file file;
   bool ok = false;
   try

@@ -192,3 +192,19 @@ TEST(MeshInput, PlyPropertyBeforeAnyElementIsRefused)
                                          "' (malformed PLY header: a property before any element)");
   }
 }
+
+// fuzz_mesh: CGAL's PLY reader took an element count of "-1.01" as 2^64 - 1 and looped over
+// the items (a hang); counts must be whole numbers up to the file's size.
+TEST(MeshInput, PlyElementCountThatIsNotAWholeNumberIsRefused)
+{
+  const std::string header = "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\nproperty double y\n"
+                             "property double z\nelement face ";
+  const std::string body = "\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  const std::string negative = file_with("negative_count.ply", header + "-1.01" + body);
+  EXPECT_EQ(mesh_error(negative), "cannot read a polygon mesh from '" + negative + "' (malformed PLY header: element "
+                                  "'face' has the count '-1.01', not a whole number up to the file's size)");
+  const std::string huge = file_with("huge_count.ply", header + "99999999" + body);
+  EXPECT_EQ(mesh_error(huge), "cannot read a polygon mesh from '" + huge + "' (malformed PLY header: element "
+                              "'face' has the count '99999999', not a whole number up to the file's size)");
+  EXPECT_EQ(read_mesh_file(file_with("one_face.ply", header + "1" + body)).polygons.size(), 1u);
+}
