@@ -76,7 +76,8 @@ Coefficient_file read_coefficient_file(std::istream& in, std::uint64_t bytes, co
   if(!get_binary(in, file.relative_error)) throw Tool_error(what + "truncated");
   for(double s : file.signature)
     if(!std::isfinite(s)) throw Tool_error(what + "non-finite basis signature");
-  if(!(file.relative_error >= 0 && file.relative_error <= 1))
+  // At most 1 (a projection), up to the roundoff of a field orthogonal to the kept elements.
+  if(!(file.relative_error >= 0 && file.relative_error <= 1 + 1e-9))
     throw Tool_error(what + "the relative error at compression is not in [0, 1]");
   file.coefficients.resize(k);
   char end[8];
