@@ -14,6 +14,7 @@ packages=(
   libcairo2-dev pkg-config fonts-dejavu-core # pictures: Field_renderer (PNG, SVG) and its text
   libcgal-demo                               # CGAL's data tree: the default mesh and the test meshes
   chromium                                   # the editor's end-to-end test (headless)
+  clang libclang-rt-14-dev                   # the fuzzers (scripts/fuzz.sh): libFuzzer, ASan and UBSan runtimes
 )
 # The editor page is bundled with npm; a node already on PATH (say, a newer one from
 # elsewhere) is kept rather than replaced by Debian's.

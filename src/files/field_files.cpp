@@ -7,6 +7,7 @@
 #include <CGAL/Tangent_vector_fields/field_files.h>
 
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <iomanip>
@@ -195,6 +196,25 @@ std::vector<double> parse_numbers(const std::string& text, const std::string& wh
   return values;
 }
 
+// A count in an attribute: all of it a non-negative integer ("12", not "12x", "-1" or "1e3");
+// 0 if absent.
+long long count_attribute(const std::map<std::string, std::string>& attributes, const std::string& key)
+{
+  const auto it = attributes.find(key);
+  if(it == attributes.end()) return 0;
+  const std::string& text = it->second;
+  char* end = nullptr;
+  errno = 0;
+  const long long n = std::strtoll(text.c_str(), &end, 10);
+  if(text.empty() || end != text.c_str() + text.size() || errno == ERANGE || n < 0 || n > (1LL << 40))
+    throw Invalid_input("VTK PolyData: " + key + "=\"" + text.substr(0, 40) + "\" is not a count");
+  return n;
+}
+
+// Whether `x` is a whole number in [0, highest]: checked before any conversion to an integer
+// type (a cast of a value out of its range is undefined).
+bool is_index(double x, double highest) { return x >= 0 && x <= highest && x == std::floor(x); }
+
 std::vector<std::vector<int>> make_cells(const std::vector<double>& connectivity, const std::vector<double>& offsets,
                                          const std::string& section)
 {
@@ -202,11 +222,17 @@ std::vector<std::vector<int>> make_cells(const std::vector<double>& connectivity
   std::size_t start = 0;
   for(double o : offsets)
   {
-    const std::size_t end = static_cast<std::size_t>(o);
-    if(!(o >= 0) || end < start || end > connectivity.size())
+    if(!is_index(o, double(connectivity.size())) || static_cast<std::size_t>(o) < start)
       throw Invalid_input("VTK PolyData: bad offsets in <" + section + ">");
+    const std::size_t end = static_cast<std::size_t>(o);
     std::vector<int> cell;
-    for(std::size_t i = start; i < end; ++i) cell.push_back(static_cast<int>(connectivity[i]));
+    for(std::size_t i = start; i < end; ++i)
+    {
+      if(!is_index(connectivity[i], double(std::numeric_limits<int>::max())))
+        throw Invalid_input("VTK PolyData: the connectivity of <" + section + "> holds " +
+                            std::to_string(connectivity[i]) + ", not a point index");
+      cell.push_back(static_cast<int>(connectivity[i]));
+    }
     cells.push_back(std::move(cell));
     start = end;
   }
@@ -268,11 +294,10 @@ Vtk_polydata read_vtk_polydata(std::istream& in)
     else if(tag.name == "Piece")
     {
       if(expected_points >= 0) throw Invalid_input("VTK PolyData: only files of one piece are read");
-      expected_points = std::atoll(tag.attributes["NumberOfPoints"].c_str());
-      expected_lines = std::atoll(tag.attributes["NumberOfLines"].c_str());
-      expected_polys = std::atoll(tag.attributes["NumberOfPolys"].c_str());
-      if(std::atoll(tag.attributes["NumberOfVerts"].c_str()) != 0 ||
-         std::atoll(tag.attributes["NumberOfStrips"].c_str()) != 0)
+      expected_points = count_attribute(tag.attributes, "NumberOfPoints");
+      expected_lines = count_attribute(tag.attributes, "NumberOfLines");
+      expected_polys = count_attribute(tag.attributes, "NumberOfPolys");
+      if(count_attribute(tag.attributes, "NumberOfVerts") != 0 || count_attribute(tag.attributes, "NumberOfStrips") != 0)
         throw Invalid_input("VTK PolyData: vertex and strip cells are not read");
     }
     else if(tag.name == "Points" || tag.name == "Lines" || tag.name == "Polys" || tag.name == "PointData" ||
@@ -292,9 +317,11 @@ Vtk_polydata read_vtk_polydata(std::istream& in)
       if(format != "ascii")
         throw Invalid_input("VTK PolyData: data arrays in format '" + format + "' are not read (only ascii)");
       const std::string name = tag.attributes["Name"];
-      const int components =
-          tag.attributes.count("NumberOfComponents") ? std::atoi(tag.attributes["NumberOfComponents"].c_str()) : 1;
-      if(components <= 0) throw Invalid_input("VTK PolyData: array '" + name + "' has no components");
+      const long long components =
+          tag.attributes.count("NumberOfComponents") ? count_attribute(tag.attributes, "NumberOfComponents") : 1;
+      if(components <= 0 || components > 1000)
+        throw Invalid_input("VTK PolyData: array '" + name + "' has " + std::to_string(components) +
+                            " components (1 to 1000 are read)");
       std::vector<double> values = tag.self_closing ? std::vector<double>() : parse_numbers(xml.text_until("DataArray"), name);
       if(values.size() % components != 0)
         throw Invalid_input("VTK PolyData: array '" + name + "' has a partial tuple");
@@ -306,7 +333,8 @@ Vtk_polydata read_vtk_polydata(std::istream& in)
       else if(section == "Lines" || section == "Polys")
         cell_arrays[section == "Lines" ? 0 : 1][name] = std::move(values);
       else if(section == "PointData" || section == "CellData")
-        (section == "PointData" ? data.point_data : data.cell_data).push_back({name, components, std::move(values)});
+        (section == "PointData" ? data.point_data : data.cell_data)
+            .push_back({name, static_cast<int>(components), std::move(values)});
       else
         throw Invalid_input("VTK PolyData: data array '" + name + "' outside a known section");
     }
@@ -461,13 +489,18 @@ Raw_field read_raw_field(std::istream& in)
   long long faces = -1;
   if(!(in >> field.degree >> faces) || field.degree <= 0 || faces < 0)
     throw Invalid_input("raw field: expected '<degree> <number of faces>' on the first line");
-  field.vectors.resize(static_cast<std::size_t>(faces) * field.degree);
-  for(std::size_t i = 0; i < field.vectors.size(); ++i)
-    for(double& c : field.vectors[i])
+  // Vectors as they are read, not the announced count allocated up front: a corrupt count
+  // is refused where the numbers end instead of asking for terabytes.
+  for(long long f = 0; f < faces; ++f)
+    for(int k = 0; k < field.degree; ++k)
     {
-      if(!(in >> c))
-        throw Invalid_input("raw field: face " + std::to_string(i / field.degree) + " is missing or unreadable");
-      if(!std::isfinite(c)) throw Invalid_input("raw field: face " + std::to_string(i / field.degree) + " is not finite");
+      std::array<double, 3> v;
+      for(double& c : v)
+      {
+        if(!(in >> c)) throw Invalid_input("raw field: face " + std::to_string(f) + " is missing or unreadable");
+        if(!std::isfinite(c)) throw Invalid_input("raw field: face " + std::to_string(f) + " is not finite");
+      }
+      field.vectors.push_back(v);
     }
   std::string rest;
   if(in >> rest) throw Invalid_input("raw field: more numbers than " + std::to_string(faces) + " faces");

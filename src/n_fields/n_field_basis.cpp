@@ -212,6 +212,17 @@ N_field_basis N_field_basis::load(std::shared_ptr<const N_field_operators> opera
   for(int* x : {&rep.inertia, &rep.expected}) *x = r.value<std::int32_t>();
   r.expect_magic(file_magic, "the file is corrupt (no end marker)");
   if(!basis.values_.allFinite() || !basis.fields_.allFinite()) r.fail("the file holds non-finite numbers");
+  // A basis comes in pairs (z, i z), each element of unit norm in the masses (as computed, to
+  // roundoff): a corrupt number in a field changes its norm (as Eigenfield_basis::load checks).
+  if(basis.size() % 2 != 0) r.fail("an odd number of elements (they come in pairs z, i z)");
+  const Vector& masses = ops.masses();
+  for(int k = 0; k < basis.size(); ++k)
+  {
+    const double norm = basis.fields_.col(k).cwiseAbs2().dot(masses);
+    if(!(std::abs(norm - 1) <= 1e-6))
+      r.fail("element " + std::to_string(k) + " has norm " + std::to_string(std::sqrt(norm)) +
+             " instead of 1 (the file is corrupt)");
+  }
   return basis;
 }
 

@@ -155,9 +155,6 @@ int count_below(const Scalar_problem& p, double tau)
   return count_eigenvalues_below(p.A, p.d, tau * p.area) - static_cast<int>(p.kernel.cols());
 }
 
-const char file_magic[8] = {'T', 'V', 'F', 'B', 'A', 'S', 'I', 'S'};
-const std::uint32_t file_version = 2; // 2: eigenfunctions in double or float32 (a precision byte)
-
 } // namespace
 
 Eigenfield_basis::Eigenfield_basis(std::shared_ptr<const Hodge_solver> solver) : solver_(std::move(solver))
@@ -504,79 +501,6 @@ Compressed_fields Eigenfield_basis::compress(const Matrix& fields, int k) const
     c.relative_errors[j] = norm > 0 ? std::sqrt(error.col(j).cwiseAbs2().dot(mass)) / norm : 0.;
   }
   return c;
-}
-
-void Eigenfield_basis::save(const std::string& path) const
-{
-  using internal::write_matrix;
-  using internal::write_value;
-  std::ofstream out(path, std::ios::binary);
-  if(!out) throw Invalid_input("cannot write the spectral basis to '" + path + "'");
-  const Intrinsic_mesh& mesh = operators().mesh();
-  internal::write_basis_header(out, file_magic, file_version, mesh);
-  write_matrix(out, exact_values_);
-  exact_functions_.write(out);
-  write_matrix(out, coexact_values_);
-  coexact_functions_.write(out);
-  write_matrix(out, harmonic_);
-  write_value<std::int64_t>(out, size());
-  for(const Element& e : order_)
-  {
-    write_value<std::uint8_t>(out, static_cast<std::uint8_t>(e.type));
-    write_value<std::int32_t>(out, e.index);
-  }
-  const Basis_report& r = report_;
-  for(double x : {r.max_residual, r.exact_complete_below, r.coexact_complete_below, r.exact_seconds,
-                  r.coexact_seconds, r.harmonic_seconds})
-    write_value(out, x);
-  for(int x : {r.exact_inertia, r.exact_expected, r.coexact_inertia, r.coexact_expected})
-    write_value<std::int32_t>(out, x);
-  write_value(out, file_magic);
-  if(!out) throw Invalid_input("writing the spectral basis to '" + path + "' failed");
-}
-
-Eigenfield_basis Eigenfield_basis::load(std::shared_ptr<const Hodge_solver> solver, const std::string& path)
-{
-  Eigenfield_basis basis(std::move(solver));
-  std::uint64_t bytes = 0;
-  std::ifstream in = internal::open_basis_file(path, "spectral basis", bytes);
-  internal::Binary_reader r(in, path, bytes, "spectral basis");
-  const Intrinsic_mesh& mesh = basis.operators().mesh();
-  const std::uint32_t version = r.expect_basis_header(file_magic, 1, file_version, mesh);
-  const Eigen::Index nv = mesh.number_of_vertices(), ne = mesh.number_of_interior_edges(), nf = mesh.number_of_faces();
-  basis.exact_values_ = r.matrix(-1, 1, "exact eigenvalues");
-  auto functions = [&](Eigen::Index rows, Eigen::Index cols, const char* what) {
-    // Version 1 stored double eigenfunctions without a precision byte.
-    return version == 1 ? Eigenfunction_matrix(r.matrix(rows, cols, what)) : Eigenfunction_matrix::read(r, rows, cols, what);
-  };
-  basis.exact_functions_ = functions(nv, basis.exact_values_.size(), "exact eigenfunctions");
-  basis.coexact_values_ = r.matrix(-1, 1, "coexact eigenvalues");
-  basis.coexact_functions_ = functions(ne, basis.coexact_values_.size(), "coexact eigenfunctions");
-  basis.harmonic_ = r.matrix(2 * nf, -1, "harmonic fields");
-  const std::int64_t count = r.value<std::int64_t>();
-  if(count < 0 || count > basis.number_of_harmonic() + basis.number_of_exact() + basis.number_of_coexact())
-    r.fail("inconsistent element count");
-  for(std::int64_t k = 0; k < count; ++k)
-  {
-    const std::uint8_t type = r.value<std::uint8_t>();
-    const std::int32_t index = r.value<std::int32_t>();
-    const int available = type == 0 ? basis.number_of_harmonic() : type == 1 ? basis.number_of_exact()
-                        : type == 2 ? basis.number_of_coexact() : -1;
-    if(index < 0 || index >= available) r.fail("inconsistent element table");
-    basis.order_.push_back({static_cast<Eigenfield_type>(type), index});
-  }
-  Basis_report& rep = basis.report_;
-  for(double* x : {&rep.max_residual, &rep.exact_complete_below, &rep.coexact_complete_below, &rep.exact_seconds,
-                   &rep.coexact_seconds, &rep.harmonic_seconds})
-    *x = r.value<double>();
-  for(int* x : {&rep.exact_inertia, &rep.exact_expected, &rep.coexact_inertia, &rep.coexact_expected})
-    *x = r.value<std::int32_t>();
-  r.expect_magic(file_magic, "the file is corrupt (no end marker)");
-  basis.update_values();
-  if(!basis.values_.allFinite() || !basis.exact_functions_.all_finite() || !basis.coexact_functions_.all_finite() ||
-     !basis.harmonic_.allFinite())
-    r.fail("the file holds non-finite numbers");
-  return basis;
 }
 
 } // namespace Tangent_vector_fields

@@ -5,28 +5,19 @@
 // stored in a .tvfc file with the basis's signature (so that a file is decompressed only with
 // the basis it was made with).  No Surface_mesh here (see tool_mesh.cpp).
 
+#include "coefficient_file.h"
 #include "tool.h"
 
 #include <CGAL/Tangent_vector_fields/Eigenfield_basis.h>
 
 #include <algorithm>
 #include <array>
-#include <cerrno>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
-#include <fstream>
 
 namespace tvf_tool {
 
 namespace {
-
-// --- .tvfc: compressed coefficients -----------------------------------------------------
-
-const char coefficient_magic[8] = {'T', 'V', 'F', 'C', 'O', 'E', 'F', 'S'};
-const char coefficient_end[8] = {'T', 'V', 'F', 'C', 'E', 'N', 'D', '\0'};
-const std::uint32_t coefficient_version = 1;
-const std::uint32_t byte_order_mark = 0x01020304u;
 
 std::uint64_t splitmix(std::uint64_t x)
 {
@@ -57,71 +48,6 @@ std::array<double, 4> basis_signature(const TVF::Eigenfield_basis& b, int k, dou
     for(int j = 0; j < k; ++j) s[m] += hashed_unit(2 + m, static_cast<std::uint64_t>(j)) * a[j];
   if(scale) *scale = a.norm();
   return s;
-}
-
-struct Coefficient_file
-{
-  std::uint64_t faces = 0;
-  std::array<double, 4> signature{{0, 0, 0, 0}};
-  double relative_error = 0;
-  Eigen::VectorXd coefficients;
-};
-
-template <class T>
-void put_binary(std::ostream& out, const T& value)
-{
-  out.write(reinterpret_cast<const char*>(&value), sizeof(T));
-}
-
-template <class T>
-bool get_binary(std::istream& in, T& value)
-{
-  return static_cast<bool>(in.read(reinterpret_cast<char*>(&value), sizeof(T)));
-}
-
-void write_coefficient_file(const std::string& path, const Coefficient_file& file)
-{
-  std::ofstream out(path, std::ios::binary);
-  if(!out) throw Tool_error("cannot open '" + path + "' for writing: " + std::strerror(errno));
-  out.write(coefficient_magic, 8);
-  put_binary(out, coefficient_version);
-  put_binary(out, byte_order_mark);
-  put_binary(out, file.faces);
-  put_binary(out, static_cast<std::uint32_t>(file.coefficients.size()));
-  put_binary(out, std::uint32_t(1)); // fields
-  for(double s : file.signature) put_binary(out, s);
-  put_binary(out, file.relative_error);
-  out.write(reinterpret_cast<const char*>(file.coefficients.data()),
-            static_cast<std::streamsize>(sizeof(double) * file.coefficients.size()));
-  out.write(coefficient_end, 8);
-  if(!out) throw Tool_error("writing '" + path + "' failed");
-}
-
-Coefficient_file read_coefficient_file(const std::string& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  if(!in) throw Tool_error("cannot open coefficient file '" + path + "': " + std::strerror(errno));
-  const std::string what = "coefficient file '" + path + "': ";
-  char magic[8];
-  std::uint32_t version = 0, bom = 0, k = 0, fields = 0;
-  Coefficient_file file;
-  if(!in.read(magic, 8) || std::memcmp(magic, coefficient_magic, 8) != 0)
-    throw Tool_error(what + "not a .tvfc file (no TVFCOEFS header)");
-  if(!get_binary(in, version) || version != coefficient_version)
-    throw Tool_error(what + "format version " + std::to_string(version) + ", this tool reads version 1");
-  if(!get_binary(in, bom) || bom != byte_order_mark) throw Tool_error(what + "written with another byte order");
-  if(!get_binary(in, file.faces) || !get_binary(in, k) || !get_binary(in, fields) || fields != 1 || k > (1u << 28))
-    throw Tool_error(what + "bad header");
-  for(double& s : file.signature)
-    if(!get_binary(in, s)) throw Tool_error(what + "truncated");
-  if(!get_binary(in, file.relative_error)) throw Tool_error(what + "truncated");
-  file.coefficients.resize(k);
-  char end[8];
-  if(!in.read(reinterpret_cast<char*>(file.coefficients.data()), static_cast<std::streamsize>(sizeof(double) * k)) ||
-     !in.read(end, 8) || std::memcmp(end, coefficient_end, 8) != 0)
-    throw Tool_error(what + "truncated or corrupt");
-  if(!file.coefficients.allFinite()) throw Tool_error(what + "non-finite coefficients");
-  return file;
 }
 
 } // namespace

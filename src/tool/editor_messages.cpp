@@ -16,11 +16,34 @@ double milliseconds_since(Clock::time_point start)
 
 // --- JSON out -----------------------------------------------------------------------------------
 
+namespace {
+
+// The length of the well-formed UTF-8 sequence at `text[i]` (RFC 3629: no overlong forms, no
+// surrogates, at most U+10FFFF), or 0.
+std::size_t utf8_sequence_length(const std::string& text, std::size_t i)
+{
+  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+  const unsigned char c = byte(i);
+  std::size_t length = 0;
+  unsigned char low = 0x80, high = 0xbf; // the range of the second byte
+  if(c >= 0xc2 && c <= 0xdf) length = 2;
+  else if(c >= 0xe0 && c <= 0xef) length = 3, low = c == 0xe0 ? 0xa0 : 0x80, high = c == 0xed ? 0x9f : 0xbf;
+  else if(c >= 0xf0 && c <= 0xf4) length = 4, low = c == 0xf0 ? 0x90 : 0x80, high = c == 0xf4 ? 0x8f : 0xbf;
+  else return 0;
+  if(i + length > text.size() || byte(i + 1) < low || byte(i + 1) > high) return 0;
+  for(std::size_t k = 2; k < length; ++k)
+    if(byte(i + k) < 0x80 || byte(i + k) > 0xbf) return 0;
+  return length;
+}
+
+} // namespace
+
 std::string quote(const std::string& text)
 {
   std::string q = "\"";
-  for(unsigned char c : text)
+  for(std::size_t i = 0; i < text.size(); ++i)
   {
+    const unsigned char c = static_cast<unsigned char>(text[i]);
     if(c == '"' || c == '\\') q += '\\', q += char(c);
     else if(c == '\n') q += "\\n";
     else if(c < 0x20)
@@ -29,7 +52,14 @@ std::string quote(const std::string& text)
       std::snprintf(buffer, sizeof buffer, "\\u%04x", c);
       q += buffer;
     }
-    else q += char(c);
+    else if(c < 0x80) q += char(c);
+    else if(const std::size_t length = utf8_sequence_length(text, i))
+    {
+      q.append(text, i, length);
+      i += length - 1;
+    }
+    else
+      q += "\\ufffd"; // a byte of no UTF-8 character (e.g. a page's bad message quoted in an error): JSON needs UTF-8
   }
   return q + "\"";
 }

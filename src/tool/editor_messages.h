@@ -31,7 +31,7 @@ public:
 
 double milliseconds_since(Clock::time_point start);
 
-/// A JSON string literal of `text`.
+/// A JSON string literal of `text`; bytes that are not UTF-8 become U+FFFD (JSON text is UTF-8).
 std::string quote(const std::string& text);
 /// All 17 digits (`null` if not finite).
 std::string number(double x);

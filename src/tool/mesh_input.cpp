@@ -16,9 +16,12 @@
 
 #include <array>
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <fstream>
+#include <locale>
 #include <set>
+#include <sstream>
 
 namespace tvf_tool {
 
@@ -67,6 +70,97 @@ bool read_ply_face_properties(const std::string& path, std::vector<std::pair<std
   return true;
 }
 
+// CGAL 5.5's PLY reader adds a "property" to the last element read without checking that
+// there is one (a property line before any element line crashes it), and reads an element's
+// count as std::size_t ("-1" becomes 2^64 - 1, items it then loops over).  Returns the reason
+// to refuse such a header, or "".  Found by test/fuzz's mesh target.
+std::string ply_header_defect(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  const std::streamoff bytes = in.tellg();
+  in.seekg(0);
+  std::string line;
+  bool element_seen = false;
+  for(int n = 0; n < 100000 && std::getline(in, line); ++n)
+  {
+    std::istringstream words(line);
+    std::string keyword, name, count;
+    words >> keyword;
+    if(keyword == "end_header") break;
+    if(keyword == "property" && !element_seen) return "a property before any element";
+    if(keyword != "element") continue;
+    element_seen = true;
+    words >> name >> count;
+    // Every item of an element takes a byte at least, unless it has no properties: a count
+    // up to the file's size is plenty.
+    if(count.empty() || count.size() > 18 || count.find_first_not_of("0123456789") != std::string::npos ||
+       std::stoll(count) > bytes)
+      return "element '" + name.substr(0, 40) + "' has the count '" + count.substr(0, 40) +
+             "', not a whole number up to the file's size";
+  }
+  return "";
+}
+
+// The numbers at the start of a line of an OFF file, read as CGAL's scanner reads them: up to
+// a comment or the first word that is not a number.
+std::vector<double> off_numbers(const std::string& line)
+{
+  std::istringstream words(line.substr(0, line.find('#')));
+  words.imbue(std::locale::classic());
+  std::vector<double> numbers;
+  double x;
+  while(words >> x) numbers.push_back(x);
+  return numbers;
+}
+
+// CGAL 5.5's OFF reader takes a facet's vertex count from the first number of its line
+// unchecked: it converts a negative or fractional count to std::size_t (undefined) and
+// allocates a huge one before it finds the numbers missing (3 GB for a 3 KB file).  Returns the
+// reason to refuse an ASCII OFF file whose facet line announces more vertices than it holds,
+// or "" (also for what this check does not follow, e.g. binary OFF: CGAL decides).  Found by
+// test/fuzz's mesh target.
+std::string off_facet_defect(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::string line, keyword;
+  // Lines with content, comments and blank lines skipped as CGAL's scanner skips them.
+  const auto next_line = [&]() -> bool {
+    while(std::getline(in, line))
+    {
+      const std::size_t first = line.find_first_not_of(" \t\r");
+      if(first != std::string::npos && line[first] != '#') return true;
+    }
+    return false;
+  };
+  if(!next_line()) return "";
+  std::istringstream header(line.substr(0, line.find('#')));
+  header >> keyword;
+  if(keyword != "OFF" && keyword != "COFF" && keyword != "NOFF" && keyword != "CNOFF") return "";
+  std::string rest;
+  std::getline(header, rest);
+  if(rest.find("BINARY") != std::string::npos) return "";
+  std::vector<double> counts = off_numbers(rest);
+  if(counts.empty())
+  {
+    if(!next_line()) return "";
+    counts = off_numbers(line);
+  }
+  if(counts.size() < 2 || !(counts[0] >= 0 && counts[0] <= 1e9) || !(counts[1] >= 0 && counts[1] <= 1e9)) return "";
+  const long long vertices = static_cast<long long>(counts[0]), facets = static_cast<long long>(counts[1]);
+  for(long long v = 0; v < vertices; ++v)
+    if(!next_line()) return ""; // one vertex a line, as CGAL reads them
+  for(long long f = 0; f < facets && next_line(); ++f)
+  {
+    const std::vector<double> numbers = off_numbers(line);
+    if(numbers.empty()) return ""; // CGAL fails on it
+    const double count = numbers[0];
+    if(!(count >= 0 && count == std::floor(count) && count <= double(numbers.size() - 1)))
+      return "facet " + std::to_string(f) + " announces " + std::to_string(count) + " vertices but its line holds " +
+             std::to_string(numbers.size() - 1) + " numbers after the count";
+  }
+  return "";
+}
+
 } // namespace
 
 std::vector<std::string> Mesh_file::face_field_names() const
@@ -108,6 +202,16 @@ Mesh_file read_mesh_file(const std::string& path)
   if(!formats.count(ext))
     throw Tool_error("'" + path + "': unknown mesh format" + (ext.empty() ? std::string() : " '." + ext + "'") +
                      " (the tool reads .off, .obj, .ply, .stl and .ts)");
+  if(ext == "off")
+  {
+    const std::string defect = off_facet_defect(path);
+    if(!defect.empty()) throw Tool_error("cannot read a polygon mesh from '" + path + "' (malformed OFF: " + defect + ")");
+  }
+  if(ext == "ply")
+  {
+    const std::string defect = ply_header_defect(path);
+    if(!defect.empty()) throw Tool_error("cannot read a polygon mesh from '" + path + "' (malformed PLY header: " + defect + ")");
+  }
   Mesh_file file;
   bool ok = false;
   try

@@ -9,6 +9,7 @@
 
 #include "n_field_test_support.h"
 
+#include <CGAL/Tangent_vector_fields/N_field_basis.h>
 #include <CGAL/Tangent_vector_fields/N_field_singularities.h>
 #include <CGAL/Tangent_vector_fields/errors.h>
 #include <CGAL/Tangent_vector_fields/n_field_files.h>
@@ -19,6 +20,7 @@
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <fstream>
 #include <numeric>
 #include <set>
@@ -486,4 +488,40 @@ TEST(NFieldOperators, EnergyDensityIntegratesToTheEnergyAndVanishesForParallelFi
   const auto ops = n_field_operators(disk, 3);
   ASSERT_EQ(ops->kernel().cols(), 2);
   EXPECT_LT(ops->energy_density(ops->kernel().col(0)).cwiseAbs().maxCoeff(), 1e-20);
+}
+
+// Like a .tvfb file (fuzz_tvfb found a corrupt one that loaded): a number of a field changed
+// with sizes, mesh identity and end marker intact is refused, with the element named.
+TEST(NFieldBasis, LoadRefusesAFieldThatIsNotOfUnitNorm)
+{
+  const Mesh cube = make_cube(4);
+  const auto nops = n_field_operators(cube, 4);
+  const TVF::N_field_basis basis(nops, 12);
+  const std::string path = ::testing::TempDir() + "/corrupt_cube4.tvfn";
+  basis.save(path);
+  std::string bytes;
+  {
+    std::ifstream in(path, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  // A 64-byte header; n, boundary, singularity count (none), kernel dimension; the eigenvalues
+  // (16 bytes of sizes, 12 doubles); the fields' sizes, then their first double (element 0).
+  const std::size_t first_field = 64 + 16 + 16 + 8 * 12 + 16;
+  double x;
+  std::memcpy(&x, &bytes[first_field], 8);
+  x = 1000 * x + 1;
+  std::memcpy(&bytes[first_field], &x, 8);
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+  try
+  {
+    TVF::N_field_basis::load(nops, path);
+    FAIL() << "loaded";
+  }
+  catch(const TVF::Invalid_input& e)
+  {
+    const std::string message = e.what();
+    EXPECT_EQ(message.rfind("cannot load the n-field basis from '" + path + "': element 0 has norm ", 0), 0u) << message;
+    EXPECT_NE(message.find(" instead of 1 (the file is corrupt)"), std::string::npos) << message;
+  }
+  std::remove(path.c_str());
 }

@@ -8,6 +8,7 @@
 #include "test_meshes.h"
 
 #include <CGAL/Tangent_vector_fields/face_field_io.h>
+#include <CGAL/Tangent_vector_fields/field_files.h>
 #include <CGAL/Tangent_vector_fields/hodge_decomposition.h>
 
 #include <CGAL/Surface_mesh/IO/PLY.h>
@@ -323,4 +324,64 @@ TEST(FieldFiles, PlyRoundTripThroughCgalIO)
   ASSERT_TRUE(TVF::face_field_from_properties(back, "velocity", w));
   for(Face_index f : mesh.faces()) EXPECT_EQ(v[f], w[f]);
   EXPECT_FALSE(TVF::face_field_from_properties(back, "absent", w));
+}
+
+// --- Field files on hostile input (regressions of test/fuzz, doc/fuzzing.md) --------------------
+
+namespace {
+
+// The message of the Invalid_input that reading `text` with `read` throws ("" if none).
+template <class Read>
+std::string field_file_error(const std::string& text, Read read)
+{
+  std::istringstream in(text);
+  try
+  {
+    read(in);
+  }
+  catch(const TVF::Invalid_input& e)
+  {
+    return e.what();
+  }
+  return "";
+}
+
+// A triangle as VTK PolyData, with `connectivity`, `offsets` and the `<Piece>` attributes given.
+std::string triangle_vtp(const std::string& connectivity, const std::string& offsets,
+                         const std::string& piece = "NumberOfPoints=\"3\" NumberOfPolys=\"1\"")
+{
+  return "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\">\n<PolyData>\n<Piece " + piece +
+         ">\n<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">0 0 0 1 0 0 0 1 0"
+         "</DataArray>\n</Points>\n<Polys>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">" +
+         connectivity + "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">" + offsets +
+         "</DataArray>\n</Polys>\n</Piece>\n</PolyData>\n</VTKFile>\n";
+}
+
+} // namespace
+
+// fuzz_rawfield: a header announcing 3.2 billion vectors allocated them all (77 GB) before reading one.
+TEST(FieldFiles, RawFieldCountBeyondItsNumbersIsRefusedWithoutAllocatingIt)
+{
+  const auto read = [](std::istream& in) { TVF::read_raw_field(in); };
+  EXPECT_EQ(field_file_error("1 1000000000000\n1 0 0\n", read), "raw field: face 1 is missing or unreadable");
+  EXPECT_EQ(field_file_error("2147483647 1\n1 0 0\n", read), "raw field: face 0 is missing or unreadable");
+  std::istringstream good("2 1\n1 0 0 0 1 0\n");
+  EXPECT_EQ(TVF::read_raw_field(good).vectors.size(), 2u);
+}
+
+// fuzz_vtp: a connectivity entry of 9.2e15 was cast to int (undefined behaviour); 1.5 was
+// taken as point 1, "3x" as 3 points.
+TEST(FieldFiles, VtkIndicesAndCountsMustBeWholeNumbers)
+{
+  const auto read = [](std::istream& in) { TVF::read_vtk_polydata(in); };
+  std::istringstream good(triangle_vtp("0 1 2", "3"));
+  EXPECT_EQ(TVF::read_vtk_polydata(good).polygons, std::vector<std::vector<int>>({{0, 1, 2}}));
+  EXPECT_EQ(field_file_error(triangle_vtp("0 1 9.2e15", "3"), read),
+            "VTK PolyData: the connectivity of <Polys> holds 9200000000000000.000000, not a point index");
+  EXPECT_EQ(field_file_error(triangle_vtp("0 1.5 2", "3"), read),
+            "VTK PolyData: the connectivity of <Polys> holds 1.500000, not a point index");
+  EXPECT_EQ(field_file_error(triangle_vtp("0 1 2", "1e300"), read), "VTK PolyData: bad offsets in <Polys>");
+  EXPECT_EQ(field_file_error(triangle_vtp("0 1 2", "2.5"), read), "VTK PolyData: bad offsets in <Polys>");
+  EXPECT_EQ(field_file_error(triangle_vtp("0 1 2", "3", "NumberOfPoints=\"3x\" NumberOfPolys=\"1\""), read),
+            "VTK PolyData: NumberOfPoints=\"3x\" is not a count");
 }

@@ -13,6 +13,8 @@
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 
+#include <cstring>
+
 namespace TVF = CGAL::Tangent_vector_fields;
 using namespace tvf_test;
 
@@ -171,7 +173,6 @@ TEST(Eigensolver, RefusesImpossibleRequests)
 
 #include <CGAL/Tangent_vector_fields/Spectral_basis.h>
 #include <CGAL/Tangent_vector_fields/face_field_io.h>
-#include <CGAL/Tangent_vector_fields/Reduced_spline_solver.h>
 
 #include <cstdio>
 #include <fstream>
@@ -458,68 +459,6 @@ TEST(SpectralBasis, SaveAndLoadRoundTripAndRefuseOtherMeshes)
   std::remove(path.c_str());
   std::remove((path + ".short").c_str());
   std::remove((path + ".version").c_str());
-}
-
-// Eigenfunctions kept in float32: half the memory and file size; every entry is the double
-// one rounded to nearest, and reconstructions, coefficients and reduced splines move only by
-// that rounding (measured against the double basis).
-TEST(SpectralBasis, Float32StorageHalvesTheMemoryAndAddsOnlyRounding)
-{
-  Mesh torus = make_torus(20, 12);
-  TVF::Discrete_operators<Mesh> operators(torus);
-  const auto ops = operators.shared_matrices();
-  auto hodge = std::make_shared<TVF::Hodge_solver>(ops);
-  TVF::Eigenfield_basis b64(hodge, TVF::Basis_request::lowest(120));
-  TVF::Eigenfield_basis b32 = b64;
-  b32.set_precision(TVF::Eigenfunction_precision::float32);
-  ASSERT_EQ(b32.precision(), TVF::Eigenfunction_precision::float32);
-  const std::size_t harmonic_bytes = sizeof(double) * b64.harmonic_fields().size();
-  EXPECT_EQ(2 * (b32.memory_bytes() - harmonic_bytes), b64.memory_bytes() - harmonic_bytes);
-  for(const auto& pair : {std::make_pair(&b64.exact_eigenfunctions(), &b32.exact_eigenfunctions()),
-                          std::make_pair(&b64.coexact_eigenfunctions(), &b32.coexact_eigenfunctions())})
-  {
-    const Eigen::MatrixXd E64 = pair.first->to_double(), E32 = pair.second->to_double();
-    const Eigen::ArrayXXd difference = (E32 - E64).array().abs();
-    EXPECT_GT(difference.maxCoeff(), 0);                                            // really rounded
-    EXPECT_LE((difference - E64.array().abs() * std::ldexp(1., -24)).maxCoeff(), 0); // to nearest
-  }
-  const Eigen::VectorXd& masses = ops->field_masses();
-  auto relative = [&](const Eigen::VectorXd& x, const Eigen::VectorXd& reference) {
-    const Eigen::VectorXd d = x - reference;
-    return std::sqrt(d.dot(masses.cwiseProduct(d)) / reference.dot(masses.cwiseProduct(reference)));
-  };
-  std::mt19937 rng(3);
-  std::normal_distribution<double> normal;
-  Eigen::VectorXd a(b64.size());
-  for(Eigen::Index k = 0; k < a.size(); ++k) a[k] = normal(rng);
-  const Eigen::VectorXd v64 = b64.field(a), v32 = b32.field(a);
-  EXPECT_GT(relative(v32, v64), 1e-10);
-  EXPECT_LT(relative(v32, v64), 1e-6);
-  EXPECT_LT((b32.coefficients(v64) - a).norm(), 1e-6 * a.norm());
-
-  TVF::Reduced_spline_solver spline64(std::make_shared<TVF::Eigenfield_basis>(b64));
-  TVF::Reduced_spline_solver spline32(std::make_shared<TVF::Eigenfield_basis>(b32));
-  for(int f : {3, 150, 400})
-  {
-    const auto c = TVF::Field_constraint::vector_in_face(f, ops->mesh().from_frame(f, 1.0, 0.5));
-    spline64.add(c);
-    spline32.add(c);
-  }
-  EXPECT_LT(relative(spline32.field(), spline64.field()), 1e-5);
-
-  // Files: about half the size; a float32 file loads as float32, entry for entry.
-  const std::string p64 = ::testing::TempDir() + "tvf_basis_64.tvfb", p32 = ::testing::TempDir() + "tvf_basis_32.tvfb";
-  b64.save(p64);
-  b32.save(p32);
-  const auto size = [](const std::string& p) { return static_cast<double>(std::ifstream(p, std::ios::binary | std::ios::ate).tellg()); };
-  EXPECT_LT(size(p32), 0.6 * size(p64));
-  const TVF::Eigenfield_basis loaded = TVF::Eigenfield_basis::load(hodge, p32);
-  EXPECT_EQ(loaded.precision(), TVF::Eigenfunction_precision::float32);
-  EXPECT_EQ(loaded.exact_eigenfunctions().to_double(), b32.exact_eigenfunctions().to_double());
-  EXPECT_EQ(loaded.coexact_eigenfunctions().to_double(), b32.coexact_eigenfunctions().to_double());
-  EXPECT_EQ(loaded.field(a), v32);
-  std::remove(p64.c_str());
-  std::remove(p32.c_str());
 }
 
 TEST(SpectralBasis, SameSpectrumAfterScalingByExtremeFactors)

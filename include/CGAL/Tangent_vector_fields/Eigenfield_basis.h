@@ -26,6 +26,10 @@
 namespace CGAL {
 namespace Tangent_vector_fields {
 
+namespace internal {
+class Binary_reader;
+}
+
 /// The three kinds of eigenfields (SPEC 5).
 enum class Eigenfield_type : std::uint8_t {
   harmonic = 0, ///< eigenvalue 0: `div = 0` and `curl* = 0`
@@ -127,8 +131,10 @@ public:
                    const Basis_options& options = Basis_options());
 
   /// Reads a basis saved by `save`.
-  /// \throws Invalid_input if the file is unreadable, of another version, or was
-  ///         computed on a different mesh.
+  /// \throws Invalid_input if the file is unreadable, of another version, was
+  ///         computed on a different mesh, or is corrupt: an exact or coexact eigenvalue
+  ///         that is not positive, elements out of order or listed twice, an element
+  ///         whose norm is not 1.
   static Eigenfield_basis load(std::shared_ptr<const Hodge_solver> solver, const std::string& path);
   /// Writes the basis to a binary file (format in `doc/manual.md`).
   void save(const std::string& path) const;
@@ -199,6 +205,8 @@ private:
   explicit Eigenfield_basis(std::shared_ptr<const Hodge_solver> solver);
   void merge(int count); // fills order_ and values_ with the `count` lowest elements
   void update_values();  // values_ from order_
+  // After `load`: positive eigenvalues, in order, each element once and of unit norm.
+  void check_loaded(internal::Binary_reader& reader) const;
 
   std::shared_ptr<const Hodge_solver> solver_;
   Eigenfunction_matrix exact_functions_, coexact_functions_;

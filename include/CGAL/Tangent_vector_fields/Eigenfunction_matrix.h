@@ -47,6 +47,12 @@ public:
 
   /// Keeps the first `k` columns.
   void keep_columns(Eigen::Index k);
+  /// Columns `first ... first + count - 1` as doubles.
+  Eigen::MatrixXd columns(Eigen::Index first, Eigen::Index count) const
+  {
+    return precision_ == Eigenfunction_precision::float64 ? Eigen::MatrixXd(double_.middleCols(first, count))
+                                                          : Eigen::MatrixXd(single_.middleCols(first, count).cast<double>());
+  }
   /// `Phi.leftCols(C.rows()) C` (`n x m`).
   Eigen::MatrixXd times(const Eigen::MatrixXd& C) const;
   /// `Phi^T B` (`d x m`).

@@ -50,7 +50,8 @@ public:
 
   /// Reads a basis saved by `save`.
   /// \throws Invalid_input if the file is unreadable, of another version or of another n,
-  ///         boundary condition or mesh.
+  ///         boundary condition or mesh, or corrupt: an odd number of elements, an element
+  ///         whose norm is not 1.
   static N_field_basis load(std::shared_ptr<const N_field_operators> operators, const std::string& path);
   /// Writes the basis to a binary file (format in `doc/manual.md`).
   void save(const std::string& path) const;

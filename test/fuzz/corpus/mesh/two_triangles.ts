@@ -1,0 +1,12 @@
+GOCAD TSurf 1
+HEADER {
+name:tri
+}
+TFACE
+VRTX 1 0 0 0
+VRTX 2 1 0 0
+VRTX 3 0 1 0
+VRTX 4 1 1 1
+TRGL 1 2 3
+TRGL 2 4 3
+END

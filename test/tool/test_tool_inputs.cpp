@@ -1,0 +1,210 @@
+// Copyright (c) 2026 The Tangent_vector_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+// The tool's own readers and the editor's answers on hostile input: the regressions of the
+// fuzzers (test/fuzz, doc/fuzzing.md).  Each test names the fuzz target that found it; the
+// input it found is kept in test/fuzz/corpus/<target>/.
+
+#include "coefficient_file.h"
+#include "editor_messages.h"
+#include "mesh_input.h"
+#include "tool.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <string>
+
+using namespace tvf_tool;
+
+namespace {
+
+// A temporary file with `bytes`, named `name` in the test's folder.
+std::string file_with(const std::string& name, const std::string& bytes)
+{
+  const std::string path = ::testing::TempDir() + name;
+  std::ofstream out(path, std::ios::binary);
+  out << bytes;
+  return path;
+}
+
+// The bytes of a valid .tvfc file of `k` coefficients, as `tvf compress` writes it.
+std::string coefficient_bytes(int k)
+{
+  Coefficient_file file;
+  file.faces = 80;
+  file.signature = {{1, -2, 3, -4}};
+  file.relative_error = 0.125;
+  file.coefficients = Eigen::VectorXd::LinSpaced(k, -1, 1);
+  const std::string path = ::testing::TempDir() + "valid.tvfc";
+  write_coefficient_file(path, file);
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  return bytes.str();
+}
+
+// Offsets in a .tvfc file (doc/manual.md).
+const std::size_t count_offset = 24, signature_offset = 32, error_offset = 64;
+
+template <class T>
+void put_at(std::string& bytes, std::size_t offset, T value)
+{
+  std::memcpy(&bytes[offset], &value, sizeof(T));
+}
+
+// The message of the Tool_error that reading `bytes` as a .tvfc file throws ("" if none).
+std::string coefficient_error(const std::string& bytes)
+{
+  std::istringstream in(bytes);
+  try
+  {
+    read_coefficient_file(in, bytes.size(), "x.tvfc");
+  }
+  catch(const Tool_error& e)
+  {
+    return e.what();
+  }
+  return "";
+}
+
+} // namespace
+
+TEST(CoefficientFile, ReadsBackWhatCompressWrites)
+{
+  const std::string path = file_with("round.tvfc", coefficient_bytes(8));
+  const Coefficient_file file = read_coefficient_file(path);
+  EXPECT_EQ(file.faces, 80u);
+  EXPECT_EQ(file.relative_error, 0.125);
+  ASSERT_EQ(file.coefficients.size(), 8);
+  EXPECT_EQ(file.coefficients[7], 1.0);
+}
+
+// fuzz_tvfc: a NaN relative error (bytes of the seed flipped) was accepted and printed by decompress.
+TEST(CoefficientFile, NonFiniteOrOutOfRangeRelativeErrorIsRefused)
+{
+  for(double error : {std::numeric_limits<double>::quiet_NaN(), HUGE_VAL, -0.5, 1.5})
+  {
+    std::string bytes = coefficient_bytes(8);
+    put_at(bytes, error_offset, error);
+    EXPECT_EQ(coefficient_error(bytes), "coefficient file 'x.tvfc': the relative error at compression is not in [0, 1]")
+        << error;
+  }
+}
+
+TEST(CoefficientFile, NonFiniteSignatureIsRefused)
+{
+  std::string bytes = coefficient_bytes(8);
+  put_at(bytes, signature_offset + 16, std::numeric_limits<double>::infinity());
+  EXPECT_EQ(coefficient_error(bytes), "coefficient file 'x.tvfc': non-finite basis signature");
+}
+
+// A count of 2^28 in a file of 144 bytes asked for 2 GiB before the read failed.
+TEST(CoefficientFile, CountBeyondTheFileSizeIsRefusedBeforeAllocating)
+{
+  std::string bytes = coefficient_bytes(8);
+  put_at(bytes, count_offset, std::uint32_t(1) << 28);
+  EXPECT_EQ(coefficient_error(bytes),
+            "coefficient file 'x.tvfc': truncated (268435456 coefficients announced, 144 bytes)");
+  put_at(bytes, count_offset, std::uint32_t(9)); // one more than the file holds
+  EXPECT_EQ(coefficient_error(bytes), "coefficient file 'x.tvfc': truncated (9 coefficients announced, 144 bytes)");
+}
+
+TEST(CoefficientFile, NoCoefficientsIsRefused)
+{
+  std::string bytes = coefficient_bytes(8);
+  put_at(bytes, count_offset, std::uint32_t(0));
+  EXPECT_EQ(coefficient_error(bytes), "coefficient file 'x.tvfc': no coefficients");
+}
+
+// fuzz_editor: the error about a message with a byte of no UTF-8 character quoted that byte,
+// and the answer was not JSON (a browser closes a WebSocket that sends invalid UTF-8).
+TEST(EditorMessages, QuotedTextIsAlwaysValidUtf8Json)
+{
+  EXPECT_EQ(quote("constr\xe1int"), "\"constr\\ufffdint\"");
+  EXPECT_EQ(quote("caf\xc3\xa9 \xe2\x82\xac \xf0\x9f\x99\x82"), "\"caf\xc3\xa9 \xe2\x82\xac \xf0\x9f\x99\x82\"");
+  EXPECT_EQ(quote("\xc0\xaf|\xed\xa0\x80|\xf4\x90\x80\x80|\xe2\x82"), // overlong, surrogate, > U+10FFFF, cut short
+            "\"\\ufffd\\ufffd|\\ufffd\\ufffd\\ufffd|\\ufffd\\ufffd\\ufffd\\ufffd|\\ufffd\\ufffd\"");
+  const std::string text = std::string("{\"type\":\"add\",\"constr\xe1int\":1}");
+  std::string message;
+  try
+  {
+    CGAL::Tangent_vector_fields::internal::parse_json(text, "not JSON");
+  }
+  catch(const CGAL::Tangent_vector_fields::Invalid_input& e)
+  {
+    message = e.what();
+  }
+  ASSERT_NE(message.find("ill-formed UTF-8"), std::string::npos) << message;
+  const Json answer = CGAL::Tangent_vector_fields::internal::parse_json("{\"message\":" + quote(message) + "}", "answer");
+  EXPECT_NE(answer["message"].get<std::string>().find("ill-formed UTF-8"), std::string::npos);
+}
+
+// The message of the Tool_error that reading the mesh file `path` throws ("" if none).
+std::string mesh_error(const std::string& path)
+{
+  try
+  {
+    read_mesh_file(path);
+  }
+  catch(const Tool_error& e)
+  {
+    return e.what();
+  }
+  return "";
+}
+
+// fuzz_mesh: CGAL's OFF scanner converts a facet's vertex count to std::size_t unchecked: a
+// negative count is undefined behaviour, a huge one is allocated (3 GB for a 3 KB file) before
+// the numbers are found missing.  Such facets are refused before CGAL reads the file.
+TEST(MeshInput, OffFacetCountBeyondItsLineIsRefused)
+{
+  const std::string header = "OFF\n3 1 0\n0 0 0\n1 0 0\n# a comment\n\n0 1 0\n";
+  const std::string negative = file_with("negative_facet.off", header + "-1.5 0 1 2\n");
+  EXPECT_EQ(mesh_error(negative), "cannot read a polygon mesh from '" + negative + "' (malformed OFF: facet 0 announces "
+                                  "-1.500000 vertices but its line holds 3 numbers after the count)");
+  const std::string huge = file_with("huge_facet.off", header + "380400716 0 1 2\n");
+  EXPECT_EQ(mesh_error(huge), "cannot read a polygon mesh from '" + huge + "' (malformed OFF: facet 0 announces "
+                              "380400716.000000 vertices but its line holds 3 numbers after the count)");
+  const std::string good = file_with("good_facet.off", "OFF 3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 255 0 0\n");
+  EXPECT_EQ(read_mesh_file(good).polygons.size(), 1u);
+}
+
+// fuzz_mesh: CGAL's PLY reader crashed (a null dereference) on a property line before any
+// element line; the header is checked before CGAL reads the file.
+TEST(MeshInput, PlyPropertyBeforeAnyElementIsRefused)
+{
+  const std::string path = file_with("property_first.ply", "ply\nformat ascii 1.0\nproperty double x\n"
+                                                           "element vertex 1\nend_header\n0\n");
+  try
+  {
+    read_mesh_file(path);
+    FAIL() << "accepted";
+  }
+  catch(const Tool_error& e)
+  {
+    EXPECT_EQ(std::string(e.what()), "cannot read a polygon mesh from '" + path +
+                                         "' (malformed PLY header: a property before any element)");
+  }
+}
+
+// fuzz_mesh: CGAL's PLY reader took an element count of "-1.01" as 2^64 - 1 and looped over
+// the items (a hang); counts must be whole numbers up to the file's size.
+TEST(MeshInput, PlyElementCountThatIsNotAWholeNumberIsRefused)
+{
+  const std::string header = "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\nproperty double y\n"
+                             "property double z\nelement face ";
+  const std::string body = "\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  const std::string negative = file_with("negative_count.ply", header + "-1.01" + body);
+  EXPECT_EQ(mesh_error(negative), "cannot read a polygon mesh from '" + negative + "' (malformed PLY header: element "
+                                  "'face' has the count '-1.01', not a whole number up to the file's size)");
+  const std::string huge = file_with("huge_count.ply", header + "99999999" + body);
+  EXPECT_EQ(mesh_error(huge), "cannot read a polygon mesh from '" + huge + "' (malformed PLY header: element "
+                              "'face' has the count '99999999', not a whole number up to the file's size)");
+  EXPECT_EQ(read_mesh_file(file_with("one_face.ply", header + "1" + body)).polygons.size(), 1u);
+}
