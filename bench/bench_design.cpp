@@ -240,10 +240,14 @@ int main(int argc, char** argv)
       if(!path.empty()) basis->save(path);
     }
     const double basis_seconds = seconds_since(start);
-    // The same basis with float32 eigenfunctions: reconstruction time and the error it adds.
-    auto basis32 = std::make_shared<TVF::Eigenfield_basis>(*basis);
-    basis32->set_precision(TVF::Eigenfunction_precision::float32);
-    std::vector<std::string> float_rows;
+    // Reduced fields in double, kept to measure what float32 eigenfunctions add (at the end).
+    struct Double_reconstruction
+    {
+      int d;
+      double seconds, bytes, reduction_error;
+      Eigen::VectorXd field;
+    };
+    std::vector<Double_reconstruction> double_reconstructions;
     const auto constraints = table_constraints(ops.mesh(), 7);
     const auto smooth = smooth_constraints(ops.mesh(), 5);
     const TVF::Field_constraint extra =
@@ -354,19 +358,6 @@ int main(int argc, char** argv)
         (basis->type(k) == TVF::Eigenfield_type::exact ? exact : coexact) += basis->type(k) != TVF::Eigenfield_type::harmonic;
       const double bytes = 8.0 * (double(exact) * ops.mesh().number_of_vertices() +
                                   double(coexact) * ops.mesh().number_of_interior_edges());
-      {
-        TVF::Reduced_spline_solver reduced32(basis32, d);
-        reduced32.add(constraints);
-        reduced32.coefficients();
-        start = Clock::now();
-        const Eigen::VectorXd field32 = reduced32.field();
-        const double seconds32 = seconds_since(start);
-        char line[200];
-        std::snprintf(line, sizeof line, "%6d | %9.2f %8.2f | %9.2f %8.2f | %9.1e | %9.2e\n", d, 1e3 * reconstruction,
-                      bytes / reconstruction / 1e9, 1e3 * seconds32, bytes / 2 / seconds32 / 1e9,
-                      relative_mx_error(masses, field32, field), relative_mx_error(masses, field, full_field));
-        float_rows.push_back(line);
-      }
       // Reduced soft design.
       start = Clock::now();
       TVF::Reduced_soft_design soft(basis, d);
@@ -382,6 +373,7 @@ int main(int argc, char** argv)
       const double soft_solve = seconds_since(start) / edits;
       // Errors against the full spline.
       const double error = relative_mx_error(masses, field, full_field);
+      double_reconstructions.push_back({d, reconstruction, bytes, error, field});
       const double angle = median_angle_degrees(field, full_field);
       const double ratio = reduced.report().energy / full.report().energy;
       random_series.x.push_back(add);
@@ -419,11 +411,6 @@ int main(int argc, char** argv)
                 "%6s | %9s %8s %9s %9s | %9s\n", static_cast<int>(smooth_away.size()), "d", "rel L2", "med deg", "c. resid",
                 "E ratio", "away");
     for(const std::string& line : smooth_rows) std::printf("%s", line.c_str());
-    std::printf("\nreconstruction of the reduced field with eigenfunctions in double and in float32 (%.2f GB and %.2f GB);\n"
-                "f32 error: float32 against double reconstruction; reduction error: double against the full spline:\n"
-                "%6s | %9s %8s | %9s %8s | %9s | %9s\n", basis->memory_bytes() / 1e9, basis32->memory_bytes() / 1e9, "d",
-                "f64 ms", "GB/s", "f32 ms", "GB/s", "f32 error", "reduction");
-    for(const std::string& line : float_rows) std::printf("%s", line.c_str());
 
     // Exact answers: the timeline of one vector constraint added to the 30 with a basis of
     // d = 1000 (or the largest below) and the full solver refining it (Refining_spline_solver).
@@ -486,6 +473,26 @@ int main(int argc, char** argv)
                   1e3 * median(drag_exact), all_exact ? "" : "  [NOT EXACT after the edits]");
       random_series.x.push_back(median(exact_ready)); // the curve's exact endpoint
       random_series.y.push_back(exact_error);
+    }
+    // The same basis with its eigenfunctions converted to float32 in place (no copy: the
+    // armadillo's 2000 eigenfields are 5.6 GB in double).
+    const double double_bytes = static_cast<double>(basis->memory_bytes());
+    basis->set_precision(TVF::Eigenfunction_precision::float32);
+    std::printf("\nreconstruction of the reduced field with eigenfunctions in double and in float32 (%.2f GB and %.2f GB);\n"
+                "f32 error: float32 against double reconstruction; reduction error: double against the full spline:\n"
+                "%6s | %9s %8s | %9s %8s | %9s | %9s\n", double_bytes / 1e9, basis->memory_bytes() / 1e9, "d", "f64 ms",
+                "GB/s", "f32 ms", "GB/s", "f32 error", "reduction");
+    for(const Double_reconstruction& r : double_reconstructions)
+    {
+      TVF::Reduced_spline_solver reduced32(basis, r.d);
+      reduced32.add(constraints);
+      reduced32.coefficients();
+      start = Clock::now();
+      const Eigen::VectorXd field32 = reduced32.field();
+      const double seconds32 = seconds_since(start);
+      std::printf("%6d | %9.2f %8.2f | %9.2f %8.2f | %9.1e | %9.2e\n", r.d, 1e3 * r.seconds, r.bytes / r.seconds / 1e9,
+                  1e3 * seconds32, r.bytes / 2 / seconds32 / 1e9, relative_mx_error(masses, field32, r.field),
+                  r.reduction_error);
     }
     chart.series.push_back(random_series);
     chart.series.push_back(smooth_series);
