@@ -10,6 +10,7 @@
 //
 // Usage: bench_spectral [data-dir] [--meshes rocker,bunny,armadillo] [--exact N] [--coexact N]
 //                       [--no-sweep] [--no-compression] [--compression-size D]
+//                       [--threads T]  (eigensolver threads; 0: one per core)
 
 #include "bench_meshes.h"
 
@@ -110,7 +111,7 @@ int main(int argc, char** argv)
 {
   std::string dir = TVF_SHARED_DATA_DIR;
   std::string which = "rocker,bunny,armadillo";
-  int exact = 500, coexact = 500, compression_size = 2000;
+  int exact = 500, coexact = 500, compression_size = 2000, threads = 0;
   bool sweep = true, compression = true;
   for(int i = 1; i < argc; ++i)
   {
@@ -118,6 +119,7 @@ int main(int argc, char** argv)
     else if(!std::strcmp(argv[i], "--exact") && i + 1 < argc) exact = std::atoi(argv[++i]);
     else if(!std::strcmp(argv[i], "--coexact") && i + 1 < argc) coexact = std::atoi(argv[++i]);
     else if(!std::strcmp(argv[i], "--compression-size") && i + 1 < argc) compression_size = std::atoi(argv[++i]);
+    else if(!std::strcmp(argv[i], "--threads") && i + 1 < argc) threads = std::atoi(argv[++i]);
     else if(!std::strcmp(argv[i], "--no-sweep")) sweep = false;
     else if(!std::strcmp(argv[i], "--no-compression")) compression = false;
     else dir = argv[i];
@@ -143,7 +145,9 @@ int main(int argc, char** argv)
     const auto& ops = solver->operators();
     ops.G(), ops.G_star_interior(), ops.W(), ops.W_star(), ops.field_masses();
     const double ops_seconds = seconds_since(start);
-    TVF::Eigenfield_basis basis(solver, TVF::Basis_request::per_type(exact, coexact));
+    TVF::Basis_options basis_options;
+    basis_options.threads = threads;
+    TVF::Eigenfield_basis basis(solver, TVF::Basis_request::per_type(exact, coexact), basis_options);
     const double total = seconds_since(start);
     const TVF::Basis_report& r = basis.report();
     std::printf("%-10s %8d %4d | %7.2f %7.2f %7.2f %7.2f %8.2f | %7.0f %7.0f %7.1fx | %9.1e %s%s\n", s.key.c_str(),

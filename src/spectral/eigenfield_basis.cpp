@@ -43,11 +43,14 @@ struct Scalar_problem
 
   int available() const { return static_cast<int>(A.rows() - kernel.cols()); }
 
-  Eigen::MatrixXd expand(const Eigen::MatrixXd& X) const
+  // `factor X` on the full vector (zero off the unknowns), column by column: the
+  // basis is large, and rows of a column-major matrix are far apart.
+  Eigen::MatrixXd expand(Eigen::MatrixXd X, double factor) const
   {
-    if(unknowns.empty()) return X;
+    if(unknowns.empty()) return X *= factor;
     Eigen::MatrixXd Y = Eigen::MatrixXd::Zero(full_size, X.cols());
-    for(std::size_t i = 0; i < unknowns.size(); ++i) Y.row(unknowns[i]) = X.row(static_cast<Eigen::Index>(i));
+    for(Eigen::Index j = 0; j < X.cols(); ++j)
+      for(std::size_t i = 0; i < unknowns.size(); ++i) Y(unknowns[i], j) = factor * X(static_cast<Eigen::Index>(i), j);
     return Y;
   }
 };
@@ -133,15 +136,16 @@ Solved solve(const Scalar_problem& p, int count, const Basis_options& options, c
   eigen_options.tolerance = options.tolerance;
   eigen_options.block_size = options.block_size;
   eigen_options.seed = options.seed;
+  eigen_options.threads = options.threads;
   if(options.progress)
     eigen_options.progress = [&](const Eigensolver_progress& e) {
       const double f = e.wanted > 0 ? std::min(1., double(e.converged) / e.wanted) : 1.;
       options.progress({stage, progress_start + progress_span * f});
     };
-  const Eigenpairs pairs = lowest_eigenpairs(p.A, p.d, count, p.kernel, eigen_options);
+  Eigenpairs pairs = lowest_eigenpairs(p.A, p.d, count, p.kernel, eigen_options);
   Solved s;
   s.values = pairs.values / p.area;
-  s.functions = p.expand(pairs.vectors) / std::sqrt(p.area);
+  s.functions = p.expand(std::move(pairs.vectors), 1 / std::sqrt(p.area));
   s.max_residual = pairs.residuals.size() ? pairs.residuals.maxCoeff() : 0.;
   s.complete_below = pairs.complete_below / p.area;
   s.check = pairs.completeness;

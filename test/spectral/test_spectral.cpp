@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <thread>
 
 namespace TVF = CGAL::Tangent_vector_fields;
 using namespace tvf_test;
@@ -136,27 +137,65 @@ TEST(Eigensolver, SpectrumSlicingAgreesWithDenseAcrossManyWindows)
   Mesh sphere = make_icosphere(3);
   Mesh jittered = make_icosphere(3);
   jitter_vertices(jittered, 0.1, 5);
+  // One chain of windows, and the spectrum cut into 2 and 3 chains solved at once (the
+  // pairs on both sides of a cut come from different runs: orthonormality is checked).
   for(const Mesh* mesh : {&sphere, &jittered})
     for(int kind = 0; kind < 2; ++kind)
     {
-      SCOPED_TRACE(std::string(mesh == &sphere ? "sphere " : "jittered ") + (kind == 0 ? "vertex" : "edge"));
       const Vertex_problem p = kind == 0 ? vertex_problem(*mesh) : edge_problem(*mesh);
       const int count = 150;
-      TVF::Eigensolver_options sliced;
-      sliced.allow_dense = false;
-      sliced.slice_size = 30;
-      const TVF::Eigenpairs a = TVF::lowest_eigenpairs(p.A, p.d, count, p.kernel, sliced);
       TVF::Eigensolver_options dense;
       dense.dense_size = 4000; // an exact reference
       const TVF::Eigenpairs b = TVF::lowest_eigenpairs(p.A, p.d, count, p.kernel, dense);
-      ASSERT_EQ(a.values.size(), count);
-      EXPECT_LT(((a.values - b.values).array() / b.values.array()).abs().maxCoeff(), 1e-9);
-      EXPECT_LE(a.residuals.maxCoeff(), 1e-10);
-      expect_orthonormal(a.vectors, p.d);
-      EXPECT_TRUE(a.completeness.passed());
-      EXPECT_GE(a.completeness.expected - static_cast<int>(p.kernel.cols()), count);
-      EXPECT_GT(a.complete_below, a.values[count - 1] * (1 - 1e-12));
+      for(int threads : {1, 2, 3})
+      {
+        SCOPED_TRACE(std::string(mesh == &sphere ? "sphere " : "jittered ") + (kind == 0 ? "vertex" : "edge") +
+                     ", threads " + std::to_string(threads));
+        TVF::Eigensolver_options sliced;
+        sliced.allow_dense = false;
+        sliced.slice_size = 30;
+        sliced.threads = threads;
+        const TVF::Eigenpairs a = TVF::lowest_eigenpairs(p.A, p.d, count, p.kernel, sliced);
+        ASSERT_EQ(a.values.size(), count);
+        EXPECT_LT(((a.values - b.values).array() / b.values.array()).abs().maxCoeff(), 1e-9);
+        EXPECT_LE(a.residuals.maxCoeff(), 1e-10);
+        expect_orthonormal(a.vectors, p.d);
+        EXPECT_TRUE(a.completeness.passed());
+        EXPECT_GE(a.completeness.expected - static_cast<int>(p.kernel.cols()), count);
+        EXPECT_GT(a.complete_below, a.values[count - 1] * (1 - 1e-12));
+      }
     }
+}
+
+TEST(Eigensolver, ChainsReportProgressOnTheCallersThreadAndStopOnACancel)
+{
+  Mesh sphere = make_icosphere(3);
+  jitter_vertices(sphere, 0.1, 7);
+  const Vertex_problem p = vertex_problem(sphere);
+  TVF::Eigensolver_options options;
+  options.allow_dense = false;
+  options.slice_size = 30;
+  options.threads = 2;
+  const std::thread::id caller = std::this_thread::get_id();
+  int calls = 0, last = 0;
+  bool other_thread = false;
+  options.progress = [&](const TVF::Eigensolver_progress& e) {
+    ++calls;
+    other_thread = other_thread || std::this_thread::get_id() != caller;
+    last = e.converged;
+    EXPECT_LE(e.converged, e.wanted);
+  };
+  const TVF::Eigenpairs e = TVF::lowest_eigenpairs(p.A, p.d, 150, p.kernel, options);
+  EXPECT_GT(calls, 0);
+  EXPECT_FALSE(other_thread);
+  EXPECT_EQ(e.values.size(), 150);
+  // A callback that throws cancels both chains; its exception reaches the caller.
+  struct Cancelled
+  {
+  };
+  options.progress = [&](const TVF::Eigensolver_progress&) { throw Cancelled(); };
+  EXPECT_THROW(TVF::lowest_eigenpairs(p.A, p.d, 150, p.kernel, options), Cancelled);
+  (void)last;
 }
 
 TEST(Eigensolver, RefusesImpossibleRequests)

@@ -87,6 +87,8 @@ struct Basis_options
   /// Vectors per Lanczos block (see `Eigensolver_options::block_size`).
   int block_size = 4;
   std::uint64_t seed = 1;
+  /// Threads of the eigensolver (see `Eigensolver_options::threads`; 0: one per core).
+  int threads = 0;
   std::function<void(const Spectral_progress&)> progress;
 };
 

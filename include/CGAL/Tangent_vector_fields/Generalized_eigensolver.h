@@ -50,6 +50,11 @@ struct Eigensolver_options
   /// lowest eigenvalues of meshes with 100k+ vertices -- the floor is required instead.
   double tolerance = 1e-10;
   std::uint64_t seed = 1;
+  /// Spectrum slicing: requests of at least two windows are cut, at an inertia-counted
+  /// shift, into this many chains of windows solved at once (0: one per hardware
+  /// thread), each with one BLAS thread (OpenBLAS's count is restored afterwards).
+  /// The progress callback is still called on the caller's thread only.
+  int threads = 0;
   /// Small problems (up to `dense_size` unknowns, or asking for a third of the
   /// space) are solved densely (LAPACK) unless this is false.
   bool allow_dense = true;

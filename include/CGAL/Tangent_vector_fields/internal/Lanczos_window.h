@@ -1,0 +1,67 @@
+// Copyright (c) 2026 The Tangent_vector_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TANGENT_VECTOR_FIELDS_INTERNAL_LANCZOS_WINDOW_H
+#define CGAL_TANGENT_VECTOR_FIELDS_INTERNAL_LANCZOS_WINDOW_H
+
+/// \file Lanczos_window.h
+/// One window of spectrum slicing: a block shift-and-invert Lanczos run that finds
+/// exactly the pairs an inertia count says lie in the window.
+
+#include <CGAL/Tangent_vector_fields/Sparse_ldlt_solver.h>
+#include <CGAL/Tangent_vector_fields/internal/Standard_eigenproblem.h>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include <functional>
+#include <random>
+#include <vector>
+
+namespace CGAL {
+namespace Tangent_vector_fields {
+namespace internal {
+
+/// A converged pair with its true residual and the tolerance it met.
+struct Ritz_pair
+{
+  double value;
+  Eigen::VectorXd vector; ///< standard form (`D^1/2 x`), unit length
+  double residual, tolerance;
+};
+typedef std::vector<Ritz_pair> Ritz_set;
+
+// Krylov basis and projected matrix, kept from window to window of a chain: allocating
+// them per window made page faults a fifth of the run.
+struct Lanczos_workspace
+{
+  Eigen::MatrixXd Q, H;
+  void reserve(Eigen::Index n, int columns)
+  {
+    if(Q.rows() != n || Q.cols() < columns) Q.resize(n, columns);
+    if(H.rows() < columns) H.resize(columns, columns);
+    H.topLeftCorner(columns, columns).setZero();
+  }
+};
+
+struct Window
+{
+  double lo, hi;
+  int wanted;      // pairs to find in (lo, hi]: the inertia count less the carried ones
+  double carry_hi; // pairs converged in (hi, carry_hi) are kept for the next window
+  double sigma;    // shift of the run
+};
+
+// One block Lanczos run at shift `w.sigma` on the complement of `locked` (and the
+// kernel).  Collects the converged pairs with eigenvalue in (lo, hi] into `window`
+// (exactly `wanted` of them) and those in (hi, carry_hi) into `carry`.
+void lanczos_window(const Standard_eigenproblem& p, const Eigen::SparseMatrix<double>& K, const Sparse_ldlt_solver& solver,
+                    const Window& w, const Eigen::MatrixXd& locked, const Eigensolver_options& options,
+                    std::mt19937_64& generator, Lanczos_workspace& space, Ritz_set& window, Ritz_set& carry,
+                    int& applications, int& basis_used, const std::function<void(int)>& report);
+
+} // namespace internal
+} // namespace Tangent_vector_fields
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,180 @@
+// Copyright (c) 2026 The Tangent_vector_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#define EIGEN_USE_BLAS
+
+#include <CGAL/Tangent_vector_fields/internal/Lanczos_window.h>
+#include <CGAL/Tangent_vector_fields/errors.h>
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <string>
+
+namespace CGAL {
+namespace Tangent_vector_fields {
+namespace internal {
+
+// One block Lanczos run at shift `w.sigma` on the complement of `locked` (and the
+// kernel).  Collects the converged pairs with eigenvalue in (lo, hi] into `window`
+// (exactly `wanted` of them) and those in (hi, carry_hi) into `carry`.
+void lanczos_window(const Standard_eigenproblem& p, const Eigen::SparseMatrix<double>& K, const Sparse_ldlt_solver& solver,
+                    const Window& w, const Eigen::MatrixXd& locked, const Eigensolver_options& options,
+                    std::mt19937_64& generator, Lanczos_workspace& space, Ritz_set& window, Ritz_set& carry,
+                    int& applications, int& basis_used, const std::function<void(int)>& report)
+{
+  const Eigen::Index n = p.sqrt_d.size();
+  const int c = static_cast<int>(p.kernel.cols());
+  const int b = std::max(1, options.block_size);
+  const int wanted = w.wanted;
+  const int free_dimension = static_cast<int>(n) - c - static_cast<int>(locked.cols());
+  const int max_basis = std::min(free_dimension, std::max(6 * wanted + 8 * b, wanted + 40 * b));
+  auto deflate = [&](Eigen::MatrixXd& Z) {
+    p.deflate(Z);
+    if(locked.cols() > 0) Z -= locked * (locked.transpose() * Z);
+  };
+  // LDL^T without pivoting of an indefinite matrix loses digits (solve residuals up
+  // to 3e-9 measured); one step of iterative refinement restores them.
+  const bool refine = solver.negative_pivots() > 0;
+  auto op = [&](const Eigen::MatrixXd& Y) -> Eigen::MatrixXd {
+    const Eigen::MatrixXd rhs = p.sqrt_d.asDiagonal() * Y;
+    Eigen::MatrixXd X = solver.solve(rhs);
+    if(refine) X += solver.solve(Eigen::MatrixXd(rhs - K * X));
+    Eigen::MatrixXd Z = p.sqrt_d.asDiagonal() * X;
+    deflate(Z);
+    return Z;
+  };
+  std::normal_distribution<double> normal;
+  auto random_block = [&](int cols) {
+    Eigen::MatrixXd X(n, cols);
+    for(Eigen::Index j = 0; j < X.cols(); ++j)
+      for(Eigen::Index i = 0; i < n; ++i) X(i, j) = normal(generator);
+    deflate(X);
+    deflate(X);
+    return X;
+  };
+
+  space.reserve(n, max_basis + b);
+  Eigen::MatrixXd& Q = space.Q;
+  Eigen::MatrixXd& H = space.H;
+  Q.leftCols(b) = orthonormal_columns(random_block(b));
+  int m = b, complete = 0;
+  int next_check = std::min(max_basis, std::max(2 * b, wanted + wanted / 2));
+  double estimate_factor = 0.5; // standard-form residual <= factor * tol (the estimate is exact up to roundoff)
+  while(true)
+  {
+    const int j0 = m - b;
+    Eigen::MatrixXd Z = op(Q.middleCols(j0, b));
+    applications += b;
+    {
+      const int l0 = std::max(0, j0 - b);
+      const Eigen::MatrixXd C = Q.middleCols(l0, m - l0).transpose() * Z;
+      Z.noalias() -= Q.middleCols(l0, m - l0) * C;
+      H.block(l0, j0, m - l0, b) += C;
+    }
+    for(int pass = 0; pass < 2; ++pass)
+    {
+      const Eigen::VectorXd before = Z.colwise().norm();
+      const Eigen::MatrixXd C = Q.leftCols(m).transpose() * Z;
+      Z.noalias() -= Q.leftCols(m) * C;
+      H.block(0, j0, m, b) += C;
+      const Eigen::VectorXd after = Z.colwise().norm();
+      if(((after.array() / before.array().max(1e-300)) > 0.5).all()) break;
+    }
+    Eigen::MatrixXd R, next;
+    block_qr(Z, next, R);
+    const double scale = R.cwiseAbs().maxCoeff();
+    for(int i = 0; i < b; ++i)
+      if(std::abs(R(i, i)) <= 1e-10 * std::max(scale, 1e-300))
+      {
+        Eigen::MatrixXd x = random_block(1);
+        for(int pass = 0; pass < 2; ++pass)
+        {
+          x -= Q.leftCols(m) * (Q.leftCols(m).transpose() * x);
+          x -= next * (next.transpose() * x);
+        }
+        next.col(i) = x / x.norm();
+        R.row(i).setZero();
+      }
+    H.block(m, j0, b, b) = R;
+    Q.middleCols(m, b) = next;
+    complete = m;
+    m += b;
+    const bool exhausted = m > max_basis || complete >= free_dimension;
+    if(complete < next_check && !exhausted) continue;
+
+    // Rayleigh-Ritz; theta = 1 / (lambda - sigma).
+    Eigen::MatrixXd T = H.topLeftCorner(complete, complete);
+    T = (T + T.transpose()).eval() / 2;
+    Eigen::VectorXd theta;
+    symmetric_eigen(T, theta);
+    const Eigen::MatrixXd coupling = H.block(complete, complete - b, b, b) * T.bottomRows(b);
+    // If op y = theta y + r with r = Q_next c, then in standard form
+    // (D^-1/2 A D^-1/2 - lambda) y = -(1/theta) D^-1/2 K D^-1/2 r: the residual of every
+    // Ritz pair from one small Gram matrix, P^T P with P = D^-1/2 K D^-1/2 Q_next.
+    const Eigen::MatrixXd P =
+        p.inv_sqrt_d.asDiagonal() * (K * (p.inv_sqrt_d.asDiagonal() * Q.middleCols(complete, b)).eval());
+    const Eigen::MatrixXd gram = P.transpose() * P;
+    std::vector<int> in_window, in_carry;
+    for(int k = 0; k < complete; ++k)
+    {
+      if(theta[k] == 0) continue;
+      const double lambda = w.sigma + 1 / theta[k];
+      const double residual =
+          std::sqrt(std::max(0., coupling.col(k).dot(gram * coupling.col(k)))) / std::abs(theta[k] * lambda);
+      const bool converged = residual <= estimate_factor * p.tolerance_for(lambda, options.tolerance);
+      if(!converged) continue;
+      if(lambda > w.lo && lambda <= w.hi) in_window.push_back(k);
+      else if(lambda > w.hi && lambda < w.carry_hi) in_carry.push_back(k);
+    }
+    report(static_cast<int>(in_window.size()));
+    if(static_cast<int>(in_window.size()) > wanted)
+      throw Numerical_failure("spectrum slicing: more converged eigenvalues in (" + std::to_string(w.lo) + ", " +
+                              std::to_string(w.hi) + "] than the inertia count " + std::to_string(wanted));
+    if(static_cast<int>(in_window.size()) == wanted)
+    {
+      // Accept on the true residual of A x = lambda D x.
+      std::vector<int> all = in_window;
+      all.insert(all.end(), in_carry.begin(), in_carry.end());
+      Eigen::MatrixXd S(complete, all.size());
+      Eigen::VectorXd values(all.size());
+      for(std::size_t i = 0; i < all.size(); ++i)
+      {
+        S.col(i) = T.col(all[i]);
+        values[i] = w.sigma + 1 / theta[all[i]];
+      }
+      const Eigen::MatrixXd Y = Q.leftCols(complete) * S;
+      Eigen::VectorXd residuals, tolerances;
+      p.residuals_of_standard(values, Y, options.tolerance, residuals, &tolerances);
+      bool window_ok = true;
+      for(std::size_t i = 0; i < in_window.size(); ++i) window_ok = window_ok && residuals[i] <= tolerances[i];
+      if(window_ok)
+      {
+        for(std::size_t i = 0; i < all.size(); ++i)
+        {
+          if(i >= in_window.size() && !(residuals[i] <= tolerances[i]))
+            continue; // carry only if accurate
+          Ritz_set& target = i < in_window.size() ? window : carry;
+          target.push_back({values[i], Y.col(i), residuals[i], tolerances[i]});
+        }
+        basis_used = std::max(basis_used, complete);
+        return;
+      }
+      estimate_factor *= 1e-2; // the estimate was optimistic: ask for more
+    }
+    if(exhausted)
+    {
+      std::ostringstream msg;
+      msg << "spectrum slicing: " << in_window.size() << " of " << wanted << " eigenvalues in (" << w.lo << ", "
+          << w.hi << "] converged within the Krylov basis limit " << max_basis;
+      throw Numerical_failure(msg.str());
+    }
+    next_check = std::min(max_basis, complete + std::max(2 * b, (wanted - static_cast<int>(in_window.size())) / 2 + b));
+  }
+}
+
+} // namespace internal
+} // namespace Tangent_vector_fields
+} // namespace CGAL
