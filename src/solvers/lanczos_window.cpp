@@ -70,16 +70,12 @@ void lanczos_window(const Standard_eigenproblem& p, const Eigen::SparseMatrix<do
     applications += b;
     {
       const int l0 = std::max(0, j0 - b);
-      const Eigen::MatrixXd C = Q.middleCols(l0, m - l0).transpose() * Z;
-      Z.noalias() -= Q.middleCols(l0, m - l0) * C;
-      H.block(l0, j0, m - l0, b) += C;
+      H.block(l0, j0, m - l0, b) += project_out_of_columns(Q, l0, m - l0, Z);
     }
     for(int pass = 0; pass < 2; ++pass)
     {
       const Eigen::VectorXd before = Z.colwise().norm();
-      const Eigen::MatrixXd C = Q.leftCols(m).transpose() * Z;
-      Z.noalias() -= Q.leftCols(m) * C;
-      H.block(0, j0, m, b) += C;
+      H.block(0, j0, m, b) += project_out_of_columns(Q, 0, m, Z);
       const Eigen::VectorXd after = Z.colwise().norm();
       if(((after.array() / before.array().max(1e-300)) > 0.5).all()) break;
     }

@@ -52,6 +52,11 @@ struct Window
   double sigma;    // shift of the run
 };
 
+/// Block classical Gram-Schmidt step: `C = Q_J^T Z`, then `Z -= Q_J C`, for the columns
+/// `J = first .. first + count - 1` of `Q`; returns `C`.
+Eigen::MatrixXd project_out_of_columns(const Eigen::MatrixXd& Q, Eigen::Index first, Eigen::Index count,
+                                       Eigen::MatrixXd& Z);
+
 // One block Lanczos run at shift `w.sigma` on the complement of `locked` (and the
 // kernel).  Collects the converged pairs with eigenvalue in (lo, hi] into `window`
 // (exactly `wanted` of them) and those in (hi, carry_hi) into `carry`.
