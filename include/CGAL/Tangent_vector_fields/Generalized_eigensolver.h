@@ -37,10 +37,12 @@ struct Eigensolver_options
   int block_size = 4;
   /// Spectrum slicing: about this many eigenvalues per window (each window one
   /// short Lanczos run and two `LDL^T` factorisations; completeness is proved per
-  /// window by the inertia).  Measured on the rocker arm (520 Crouzeix-Raviart
-  /// pairs, blocks of 4): 70 to 140 equally fast; 50 slower (more solves), 200 slower
-  /// (longer orthogonalisation).
-  int slice_size = 100;
+  /// window by the inertia).  The Krylov basis of a window grows to about 3x its
+  /// count, so the orthogonalisation per pair grows with the window.  Measured with
+  /// two chains (500 Crouzeix-Raviart pairs, medians of 4 runs in turn): rocker arm,
+  /// 50 took 0.91x the time of 100 and 35 took 1.05x that of 50; bunny, 50 and 100
+  /// equally fast.
+  int slice_size = 50;
   /// Required relative residual of every returned pair, in the mass-weighted norms:
   /// `|D^-1/2 (A x - l D x)| / (l |D^1/2 x|)`.  This is the residual of the symmetric
   /// standard form `D^-1/2 A D^-1/2`, so it bounds the relative error of the
