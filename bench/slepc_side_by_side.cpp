@@ -143,13 +143,14 @@ void print_totals(const std::string& title, const Totals& totals)
   if(totals.methods.empty()) return;
   std::printf("%s:", title.c_str());
   for(std::size_t i = 0; i < totals.methods.size(); ++i)
-    std::printf("%s %s %.2f s", i ? ";" : "", totals.methods[i].c_str(), totals.seconds[i]);
+    if(std::isnan(totals.seconds[i])) std::printf("%s %s failed", i ? ";" : "", totals.methods[i].c_str());
+    else std::printf("%s %s %.2f s", i ? ";" : "", totals.methods[i].c_str(), totals.seconds[i]);
   const int best = best_slepc(totals.seconds);
   if(best > 0 && !std::isnan(totals.seconds[0]))
     std::printf("\n  => SLEPc best (%s) / package = %.2f\n", totals.methods[best].c_str(),
                 totals.seconds[best] / totals.seconds[0]);
   else
-    std::printf("\n  => no ratio (a run failed)\n");
+    std::printf("\n  => no ratio (the package or every SLEPc run failed)\n");
 }
 
 // Solves one problem every way, prints its table, returns false if a run failed or
