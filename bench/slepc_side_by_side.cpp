@@ -115,6 +115,7 @@ struct Totals
 {
   std::vector<std::string> methods;
   std::vector<double> seconds;
+  bool complete = true; // false once the package failed on a problem (no rows to add)
 
   void add(const std::vector<Row>& rows)
   {
@@ -140,6 +141,11 @@ int best_slepc(const std::vector<double>& seconds)
 
 void print_totals(const std::string& title, const Totals& totals)
 {
+  if(!totals.complete)
+  {
+    std::printf("%s: no totals (the package failed on a problem)\n", title.c_str());
+    return;
+  }
   if(totals.methods.empty()) return;
   std::printf("%s:", title.c_str());
   for(std::size_t i = 0; i < totals.methods.size(); ++i)
@@ -167,6 +173,7 @@ bool compare_on(const Slepc_session& slepc, const Side_by_side_request& request,
   if(!package.ok)
   {
     std::printf("  package failed: %s\n", package.error.c_str());
+    totals.complete = false;
     return false;
   }
   const Interval interval = slicing_interval(package.values, wanted);
@@ -233,20 +240,8 @@ bool compare_on(const Slepc_session& slepc, const Side_by_side_request& request,
   return all_right;
 }
 
-} // namespace
-
-int run_against_slepc(const Side_by_side_request& request)
+int run_all(const Side_by_side_request& request)
 {
-  if(request.meshes.empty())
-  {
-    std::fprintf(stderr, "no mesh selected (--meshes takes rocker, bunny, armadillo)\n");
-    return 1;
-  }
-  if(request.ranks < 1)
-  {
-    std::fprintf(stderr, "--ranks must be at least 1\n");
-    return 1;
-  }
   const Slepc_session slepc; // first: it saves the environment before MPI adds to it
   const char* threads = std::getenv("OPENBLAS_NUM_THREADS");
   Slepc_settings slicing, parallel, krylov_schur;
@@ -288,6 +283,7 @@ int run_against_slepc(const Side_by_side_request& request)
     all_right &= compare_on(slepc, request, name, coexact, "coexact, W* psi = mu M* psi", request.coexact, totals);
     std::printf("\n");
     print_totals(mesh.name + ", exact + coexact", totals);
+    all.complete &= totals.complete;
     for(std::size_t i = 0; i < totals.methods.size(); ++i)
     {
       if(all.methods.size() <= i)
@@ -300,6 +296,31 @@ int run_against_slepc(const Side_by_side_request& request)
   }
   if(request.meshes.size() > 1) print_totals("\nall meshes, exact + coexact", all);
   return all_right ? 0 : 1;
+}
+
+} // namespace
+
+int run_against_slepc(const Side_by_side_request& request)
+{
+  if(request.meshes.empty())
+  {
+    std::fprintf(stderr, "no mesh selected (--meshes takes rocker, bunny, armadillo)\n");
+    return 1;
+  }
+  if(request.ranks < 1)
+  {
+    std::fprintf(stderr, "--ranks must be at least 1\n");
+    return 1;
+  }
+  try
+  {
+    return run_all(request);
+  }
+  catch(const std::exception& e) // SLEPc's start, a mesh's operators
+  {
+    std::fprintf(stderr, "bench_spectral --against-slepc: %s\n", e.what());
+    return 1;
+  }
 }
 
 } // namespace tvf_bench
