@@ -11,9 +11,15 @@
 // Usage: bench_spectral [data-dir] [--meshes rocker,bunny,armadillo] [--exact N] [--coexact N]
 //                       [--no-sweep] [--no-compression] [--compression-size D]
 //                       [--threads T]  (eigensolver threads; 0: one per core)
+//        bench_spectral --against-slepc [data-dir] [--meshes ...] [--exact N] [--coexact N]
+//                       [--ranks R] [--mpirun CMD] [--slepc-options "..."]
+// --against-slepc: the package's eigensolver next to SLEPc on the same matrices
+// (bench/slepc_side_by_side.cpp; needs a build with -DTVF_WITH_SLEPC=ON).
 
 #include "bench_meshes.h"
-
+#ifdef TVF_HAS_SLEPC
+#include "slepc_side_by_side.h"
+#endif
 
 #include <CGAL/Tangent_vector_fields/Eigenfield_basis.h>
 
@@ -109,6 +115,13 @@ std::vector<std::pair<std::string, Eigen::VectorXd>> test_fields(const TVF::Oper
 
 int main(int argc, char** argv)
 {
+#ifdef TVF_HAS_SLEPC
+  // A rank of the mpirun run that --against-slepc starts: nothing else to do.
+  if(argc == 3 && !std::strcmp(argv[1], "--slepc-child")) return tvf_bench::slepc_child_main(argv[2]);
+#endif
+  bool against_slepc = false;
+  int ranks = 2;
+  std::string mpirun = "mpirun", slepc_options;
   std::string dir = TVF_SHARED_DATA_DIR;
   std::string which = "rocker,bunny,armadillo";
   int exact = 500, coexact = 500, compression_size = 2000, threads = 0;
@@ -122,11 +135,38 @@ int main(int argc, char** argv)
     else if(!std::strcmp(argv[i], "--threads") && i + 1 < argc) threads = std::atoi(argv[++i]);
     else if(!std::strcmp(argv[i], "--no-sweep")) sweep = false;
     else if(!std::strcmp(argv[i], "--no-compression")) compression = false;
+    else if(!std::strcmp(argv[i], "--against-slepc")) against_slepc = true;
+    else if(!std::strcmp(argv[i], "--ranks") && i + 1 < argc) ranks = std::atoi(argv[++i]);
+    else if(!std::strcmp(argv[i], "--mpirun") && i + 1 < argc) mpirun = argv[++i];
+    else if(!std::strcmp(argv[i], "--slepc-options") && i + 1 < argc) slepc_options = argv[++i];
     else dir = argv[i];
   }
   const std::vector<Source> sources = {{"rocker", "rocker-arm.obj", 0, 43, 4},
                                        {"bunny", "stanford-bunny.obj", 0, 184, 18},
                                        {"armadillo", "armadillo.obj", 1, 1246, 120}};
+  if(against_slepc)
+  {
+#ifdef TVF_HAS_SLEPC
+    tvf_bench::Side_by_side_request slepc_request;
+    for(const Source& s : sources)
+      if(which.find(s.key) != std::string::npos)
+        slepc_request.meshes.push_back({s.key, [&dir, s]() -> std::shared_ptr<const TVF::Hodge_solver> {
+                                          int faces = 0;
+                                          return load(dir, s, faces);
+                                        }});
+    slepc_request.exact = exact;
+    slepc_request.coexact = coexact;
+    slepc_request.ranks = ranks;
+    slepc_request.mpirun = mpirun;
+    slepc_request.extra_options = slepc_options;
+    return tvf_bench::run_against_slepc(slepc_request);
+#else
+    (void)ranks;
+    std::fprintf(stderr, "bench_spectral was built without SLEPc: --against-slepc needs cmake -DTVF_WITH_SLEPC=ON "
+                         "and libslepc-real-dev\n");
+    return 2;
+#endif
+  }
 
   std::printf("Spectral basis benchmark: %d exact + %d coexact eigenfields (+ harmonic), one run each, seconds.\n"
               "set-up = operators + both eigenproblems + harmonic fields; residual = largest\n"

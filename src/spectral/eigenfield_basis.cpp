@@ -8,6 +8,7 @@
 #include <CGAL/Tangent_vector_fields/Generalized_eigensolver.h>
 #include <CGAL/Tangent_vector_fields/errors.h>
 #include <CGAL/Tangent_vector_fields/internal/basis_file.h>
+#include <CGAL/Tangent_vector_fields/internal/scalar_eigenproblem.h>
 
 #include <Eigen/Dense>
 
@@ -23,102 +24,12 @@ namespace Tangent_vector_fields {
 
 namespace {
 
-typedef Eigen::SparseMatrix<double> Sparse_matrix;
-
 double seconds_since(std::chrono::steady_clock::time_point start)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// One of the two scalar eigenproblems, restricted to the unknowns that carry mass
-// and scaled to unit total mass (eigenvalues scale back by the area).
-struct Scalar_problem
-{
-  Sparse_matrix A;
-  Eigen::VectorXd d;
-  Eigen::MatrixXd kernel;
-  std::vector<int> unknowns; // positions in the full vector (empty: all)
-  Eigen::Index full_size = 0;
-  double area = 1;
-
-  int available() const { return static_cast<int>(A.rows() - kernel.cols()); }
-
-  // `factor X` on the full vector (zero off the unknowns), column by column: the
-  // basis is large, and rows of a column-major matrix are far apart.
-  Eigen::MatrixXd expand(Eigen::MatrixXd X, double factor) const
-  {
-    if(unknowns.empty()) return X *= factor;
-    Eigen::MatrixXd Y = Eigen::MatrixXd::Zero(full_size, X.cols());
-    for(Eigen::Index j = 0; j < X.cols(); ++j)
-      for(std::size_t i = 0; i < unknowns.size(); ++i) Y(unknowns[i], j) = factor * X(static_cast<Eigen::Index>(i), j);
-    return Y;
-  }
-};
-
-// Exact problem: W phi = lambda M phi on the vertices in faces; the constants of
-// each component span the kernel.
-Scalar_problem exact_problem(const Operator_matrices& ops, double area)
-{
-  const Intrinsic_mesh& mesh = ops.mesh();
-  Scalar_problem p;
-  p.area = area;
-  p.full_size = mesh.number_of_vertices();
-  std::vector<int> position(mesh.number_of_vertices(), -1);
-  for(int v = 0; v < mesh.number_of_vertices(); ++v)
-    if(!mesh.is_isolated_vertex(v))
-    {
-      position[v] = static_cast<int>(p.unknowns.size());
-      p.unknowns.push_back(v);
-    }
-  const Eigen::Index n = static_cast<Eigen::Index>(p.unknowns.size());
-  if(n == mesh.number_of_vertices())
-  {
-    p.unknowns.clear();
-    p.A = ops.W();
-    p.d = ops.vertex_masses() / area;
-  }
-  else
-  {
-    std::vector<Eigen::Triplet<double>> entries;
-    const Sparse_matrix& W = ops.W();
-    for(int j = 0; j < W.outerSize(); ++j)
-      for(Sparse_matrix::InnerIterator it(W, j); it; ++it)
-        if(position[it.row()] >= 0 && position[j] >= 0) entries.emplace_back(position[it.row()], position[j], it.value());
-    p.A.resize(n, n);
-    p.A.setFromTriplets(entries.begin(), entries.end());
-    p.d.resize(n);
-    for(Eigen::Index i = 0; i < n; ++i) p.d[i] = ops.vertex_masses()[p.unknowns[i]] / area;
-  }
-  const int components = mesh.topology().number_of_components();
-  p.kernel = Eigen::MatrixXd::Zero(n, components);
-  for(Eigen::Index i = 0; i < n; ++i)
-    p.kernel(i, mesh.vertex_component(p.unknowns.empty() ? static_cast<int>(i) : p.unknowns[i])) = 1;
-  return p;
-}
-
-// Coexact problem: W* psi = mu M* psi on interior edges; a constant on each closed
-// component spans the kernel (components with boundary have zero boundary values).
-Scalar_problem coexact_problem(const Operator_matrices& ops, double area)
-{
-  const Intrinsic_mesh& mesh = ops.mesh();
-  Scalar_problem p;
-  p.area = area;
-  p.full_size = mesh.number_of_interior_edges();
-  p.A = ops.W_star();
-  p.d = ops.all_to_interior_edges(ops.edge_masses()) / area;
-  const Mesh_topology& topology = mesh.topology();
-  std::vector<int> kernel_column(topology.number_of_components(), -1);
-  int closed = 0;
-  for(int c = 0; c < topology.number_of_components(); ++c)
-    if(topology.components[c].is_closed()) kernel_column[c] = closed++;
-  p.kernel = Eigen::MatrixXd::Zero(p.full_size, closed);
-  for(int i = 0; i < mesh.number_of_interior_edges(); ++i)
-  {
-    const int column = kernel_column[mesh.edge_component(mesh.interior_edges()[i])];
-    if(column >= 0) p.kernel(i, column) = 1;
-  }
-  return p;
-}
+typedef internal::Scalar_eigenproblem Scalar_problem;
 
 struct Solved
 {
@@ -132,11 +43,7 @@ struct Solved
 Solved solve(const Scalar_problem& p, int count, const Basis_options& options, const std::string& stage,
              double progress_start, double progress_span)
 {
-  Eigensolver_options eigen_options;
-  eigen_options.tolerance = options.tolerance;
-  eigen_options.block_size = options.block_size;
-  eigen_options.seed = options.seed;
-  eigen_options.threads = options.threads;
+  Eigensolver_options eigen_options = internal::eigensolver_options(options);
   if(options.progress)
     eigen_options.progress = [&](const Eigensolver_progress& e) {
       const double f = e.wanted > 0 ? std::min(1., double(e.converged) / e.wanted) : 1.;
@@ -178,8 +85,8 @@ Eigenfield_basis::Eigenfield_basis(std::shared_ptr<const Hodge_solver> solver, c
     if(options.progress) options.progress({stage, fraction});
   };
 
-  const Scalar_problem exact = exact_problem(ops, area);
-  const Scalar_problem coexact = coexact_problem(ops, area);
+  const Scalar_problem exact = internal::scalar_eigenproblem(ops, Eigenfield_type::exact, area);
+  const Scalar_problem coexact = internal::scalar_eigenproblem(ops, Eigenfield_type::coexact, area);
   const int exact_available = exact.available(), coexact_available = coexact.available();
   const int space = harmonic_available + exact_available + coexact_available; // = 2 nf
 

@@ -1,0 +1,326 @@
+// Copyright (c) 2026 The Tangent_vector_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#include "slepc_side_by_side.h"
+
+#include <CGAL/Tangent_vector_fields/Generalized_eigensolver.h>
+#include <CGAL/Tangent_vector_fields/internal/scalar_eigenproblem.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+
+namespace tvf_bench {
+
+namespace {
+
+namespace TVF = CGAL::Tangent_vector_fields;
+typedef Eigen::SparseMatrix<double> Sparse_matrix;
+
+// The package asks for this many pairs beyond the requested count, to place the
+// slicing interval's upper end in a gap of its spectrum.
+constexpr int extra_pairs = 4;
+// A gap between consecutive eigenvalues narrower than this (relative) is taken for a
+// repeated eigenvalue: no interval end is put there.
+constexpr double smallest_gap = 1e-6;
+
+// The package's residual, |D^-1/2 (A x - l D x)| / (l |D^1/2 x|), one column at a time.
+double relative_residual(const Sparse_matrix& A, const Eigen::VectorXd& d, double lambda, const Eigen::VectorXd& x)
+{
+  const Eigen::VectorXd r = A * x - lambda * d.cwiseProduct(x);
+  return r.cwiseQuotient(d.cwiseSqrt()).norm() / (std::abs(lambda) * d.cwiseSqrt().cwiseProduct(x).norm());
+}
+
+// One method's answer on one problem, as the table shows it.
+struct Row
+{
+  std::string method;
+  Slepc_outcome outcome; // the package's answer is put in the same form
+  std::string note;
+  bool slicing = false; // must find exactly the interval's eigenvalues (the others at least as many)
+};
+
+Row run_package(const TVF::internal::Scalar_eigenproblem& p, int count)
+{
+  Row row{"package lowest_eigenpairs", {}, {}};
+  try
+  {
+    const auto start = std::chrono::steady_clock::now();
+    const TVF::Eigenpairs pairs = TVF::lowest_eigenpairs(p.A, p.d, count, p.kernel,
+                                                         TVF::internal::eigensolver_options(TVF::Basis_options()));
+    row.outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    row.outcome.values = pairs.values;
+    row.outcome.residuals.resize(pairs.values.size());
+    for(Eigen::Index i = 0; i < pairs.values.size(); ++i)
+      row.outcome.residuals[i] = relative_residual(p.A, p.d, pairs.values[i], pairs.vectors.col(i));
+    row.outcome.ok = true;
+  }
+  catch(const std::exception& e)
+  {
+    row.outcome.error = e.what();
+  }
+  return row;
+}
+
+// (lambda_1 / 2, upper) and how many eigenvalues it holds: the upper end halfway into
+// the first gap at or after the `wanted`-th eigenvalue of the package's (ascending) values.
+struct Interval
+{
+  double lower = 0, upper = 0;
+  int count = 0;
+};
+
+Interval slicing_interval(const Eigen::VectorXd& values, int wanted)
+{
+  Interval interval;
+  const int n = static_cast<int>(values.size());
+  interval.lower = values[0] / 2;
+  int m = wanted;
+  while(m < n && values[m] - values[m - 1] <= smallest_gap * values[m - 1]) ++m;
+  if(m < n)
+    interval.upper = (values[m - 1] + values[m]) / 2;
+  else // the package returned the whole spectrum, or no gap among its extra pairs
+  {
+    m = n;
+    interval.upper = values[n - 1] * (1 + 1e-3);
+  }
+  interval.count = m;
+  return interval;
+}
+
+struct Comparison
+{
+  int compared = 0;
+  double residual = 0, difference = 0;
+};
+
+// The first `count` pairs of `outcome` against the package's.
+Comparison compare(const Slepc_outcome& outcome, const Eigen::VectorXd& reference, int count)
+{
+  Comparison c;
+  c.compared = std::min<int>(count, static_cast<int>(outcome.values.size()));
+  for(int i = 0; i < c.compared; ++i)
+  {
+    c.residual = std::max(c.residual, outcome.residuals[i]);
+    c.difference = std::max(c.difference, std::abs(outcome.values[i] - reference[i]) / reference[i]);
+  }
+  return c;
+}
+
+// Seconds of each method over the problems so far; a failure voids the method's total.
+struct Totals
+{
+  std::vector<std::string> methods;
+  std::vector<double> seconds;
+  bool complete = true; // false once the package failed on a problem (no rows to add)
+
+  void add(const std::vector<Row>& rows)
+  {
+    if(methods.empty())
+      for(const Row& r : rows)
+      {
+        methods.push_back(r.method);
+        seconds.push_back(0);
+      }
+    for(std::size_t i = 0; i < rows.size(); ++i)
+      seconds[i] = rows[i].outcome.ok ? seconds[i] + rows[i].outcome.seconds : std::numeric_limits<double>::quiet_NaN();
+  }
+};
+
+// Index of the fastest SLEPc method (rows after the package's), -1 if all failed.
+int best_slepc(const std::vector<double>& seconds)
+{
+  int best = -1;
+  for(int i = 1; i < static_cast<int>(seconds.size()); ++i)
+    if(!std::isnan(seconds[i]) && (best < 0 || seconds[i] < seconds[best])) best = i;
+  return best;
+}
+
+void print_totals(const std::string& title, const Totals& totals)
+{
+  if(!totals.complete)
+  {
+    std::printf("%s: no totals (the package failed on a problem)\n", title.c_str());
+    return;
+  }
+  if(totals.methods.empty()) return;
+  std::printf("%s:", title.c_str());
+  for(std::size_t i = 0; i < totals.methods.size(); ++i)
+    if(std::isnan(totals.seconds[i])) std::printf("%s %s failed", i ? ";" : "", totals.methods[i].c_str());
+    else std::printf("%s %s %.2f s", i ? ";" : "", totals.methods[i].c_str(), totals.seconds[i]);
+  const int best = best_slepc(totals.seconds);
+  if(best > 0 && !std::isnan(totals.seconds[0]))
+    std::printf("\n  => SLEPc best (%s) / package = %.2f\n", totals.methods[best].c_str(),
+                totals.seconds[best] / totals.seconds[0]);
+  else
+    std::printf("\n  => no ratio (the package or every SLEPc run failed)\n");
+}
+
+// Solves one problem every way, prints its table, returns false if a run failed or
+// found a different number of eigenvalues than the package.
+bool compare_on(const Slepc_session& slepc, const Side_by_side_request& request, const std::string& mesh_name,
+                const TVF::internal::Scalar_eigenproblem& p, const std::string& title, int wanted, Totals& totals)
+{
+  wanted = std::min(wanted, p.available());
+  std::printf("\n%s, %s: n = %ld, %d pairs\n", mesh_name.c_str(), title.c_str(), static_cast<long>(p.A.rows()), wanted);
+  if(wanted <= 0) return true;
+  std::vector<Row> rows;
+  rows.push_back(run_package(p, std::min(wanted + extra_pairs, p.available())));
+  const Slepc_outcome package = rows[0].outcome; // a copy: rows grows below
+  if(!package.ok)
+  {
+    std::printf("  package failed: %s\n", package.error.c_str());
+    totals.complete = false;
+    return false;
+  }
+  const Interval interval = slicing_interval(package.values, wanted);
+  std::printf("  (package asked for %ld pairs; slicing interval (%.6g, %.6g) of the unit-area problem holds %d)\n",
+              static_cast<long>(package.values.size()), interval.lower, interval.upper, interval.count);
+
+  Slepc_settings slicing;
+  slicing.lower = interval.lower;
+  slicing.upper = interval.upper;
+  slicing.extra_options = request.extra_options;
+  rows.push_back({"SLEPc slicing, 1 rank", slepc.solve(p.A, p.d, p.kernel, slicing), {}, true});
+
+  Slepc_settings parallel = slicing;
+  parallel.partitions = request.ranks;
+  const std::string mpirun_name = "SLEPc slicing, mpirun -np " + std::to_string(request.ranks);
+  rows.push_back({mpirun_name, slepc.solve_with_mpirun(p.A, p.d, parallel, request.ranks, request.mpirun), {}, true});
+  if(rows.back().outcome.ok)
+  {
+    char note[80];
+    std::snprintf(note, sizeof note, "(%.2f s with start-up and files)", rows.back().outcome.launch_seconds);
+    rows.back().note = note;
+  }
+
+  Slepc_settings krylov_schur;
+  krylov_schur.method = Slepc_method::krylov_schur;
+  krylov_schur.nev = wanted + 10;
+  krylov_schur.extra_options = request.extra_options;
+  rows.push_back({"SLEPc Krylov-Schur, 1 rank", slepc.solve(p.A, p.d, p.kernel, krylov_schur), {}});
+
+  bool all_right = true;
+  std::printf("  %-30s %8s %9s %6s %10s %10s\n", "method", "seconds", "/package", "found", "residual", "eig. diff");
+  for(std::size_t i = 0; i < rows.size(); ++i)
+  {
+    const Row& row = rows[i];
+    if(!row.outcome.ok)
+    {
+      std::printf("  %-30s FAILED: %s\n", row.method.c_str(), row.outcome.error.c_str());
+      all_right = false;
+      continue;
+    }
+    const Comparison c = compare(row.outcome, package.values, interval.count);
+    std::string note = row.note;
+    const bool exact_count = row.slicing ? static_cast<int>(row.outcome.values.size()) == interval.count
+                                                           : c.compared == interval.count;
+    if(!exact_count)
+    {
+      note += std::string(note.empty() ? "" : " ") + "(" + std::to_string(row.outcome.values.size()) + " found, " +
+              std::to_string(interval.count) + " expected)";
+      all_right = false;
+    }
+    char difference[16] = "-";
+    if(i > 0) std::snprintf(difference, sizeof difference, "%.1e", c.difference);
+    std::printf("  %-30s %8.2f %9.2f %6ld %10.1e %10s%s%s\n", row.method.c_str(), row.outcome.seconds,
+                row.outcome.seconds / package.seconds, static_cast<long>(row.outcome.values.size()), c.residual,
+                difference, note.empty() ? "" : " ", note.c_str());
+  }
+  std::vector<double> seconds;
+  for(const Row& row : rows) seconds.push_back(row.outcome.ok ? row.outcome.seconds : std::numeric_limits<double>::quiet_NaN());
+  const int best = best_slepc(seconds);
+  if(best > 0)
+    std::printf("  SLEPc best / package: %.2f (%s)\n", seconds[best] / package.seconds, rows[best].method.c_str());
+  totals.add(rows);
+  std::fflush(stdout);
+  return all_right;
+}
+
+int run_all(const Side_by_side_request& request)
+{
+  const Slepc_session slepc; // first: it saves the environment before MPI adds to it
+  const char* threads = std::getenv("OPENBLAS_NUM_THREADS");
+  Slepc_settings slicing, parallel, krylov_schur;
+  slicing.extra_options = parallel.extra_options = krylov_schur.extra_options = request.extra_options;
+  parallel.partitions = request.ranks;
+  krylov_schur.method = Slepc_method::krylov_schur;
+  krylov_schur.nev = 0; // printed as N+10
+  std::printf(
+    "Package eigensolver against SLEPc on the same matrices: the basis' exact (W, vertex masses) and coexact\n"
+    "(W*, interior-edge masses) problems scaled to unit area, %d + %d lowest pairs.  seconds: set-up\n"
+    "(factorisations) + solve + eigenvectors; residual: largest |D^-1/2 (A x - l D x)| / (l |D^1/2 x|) of the\n"
+    "returned vectors, computed by the bench; eig. diff: largest relative difference to the package's\n"
+    "eigenvalues; found: pairs returned (the package asks for %d extra to place the interval's end).\n"
+    "Residual and difference are over the pairs in the slicing interval.  BLAS threads: OPENBLAS_NUM_THREADS=%s\n"
+    "for the package and the 1-rank runs, 1 per rank under mpirun.  SLEPc options:\n"
+    "  slicing, interval (lambda_1/2, gap after lambda_N): %s\n"
+    "  slicing, mpirun -np %d:                             %s\n"
+    "  Krylov-Schur, target -1, constants deflated:       %s\n",
+    request.exact, request.coexact, extra_pairs, threads ? threads : "unset", slepc_options(slicing).c_str(),
+    request.ranks, slepc_options(parallel).c_str(), slepc_options(krylov_schur).c_str());
+
+  bool all_right = true;
+  Totals all;
+  for(const Side_by_side_mesh& mesh : request.meshes)
+  {
+    const auto solver = mesh.load();
+    if(!solver)
+    {
+      all_right = false;
+      continue;
+    }
+    const TVF::Operator_matrices& ops = solver->operators();
+    const double area = ops.face_areas().sum();
+    const std::string name = mesh.name + " (" + std::to_string(ops.mesh().number_of_faces()) + " faces)";
+    Totals totals;
+    const auto exact = TVF::internal::scalar_eigenproblem(ops, TVF::Eigenfield_type::exact, area);
+    all_right &= compare_on(slepc, request, name, exact, "exact, W phi = lambda M phi", request.exact, totals);
+    const auto coexact = TVF::internal::scalar_eigenproblem(ops, TVF::Eigenfield_type::coexact, area);
+    all_right &= compare_on(slepc, request, name, coexact, "coexact, W* psi = mu M* psi", request.coexact, totals);
+    std::printf("\n");
+    print_totals(mesh.name + ", exact + coexact", totals);
+    all.complete &= totals.complete;
+    for(std::size_t i = 0; i < totals.methods.size(); ++i)
+    {
+      if(all.methods.size() <= i)
+      {
+        all.methods.push_back(totals.methods[i]);
+        all.seconds.push_back(0);
+      }
+      all.seconds[i] += totals.seconds[i];
+    }
+  }
+  if(request.meshes.size() > 1) print_totals("\nall meshes, exact + coexact", all);
+  return all_right ? 0 : 1;
+}
+
+} // namespace
+
+int run_against_slepc(const Side_by_side_request& request)
+{
+  if(request.meshes.empty())
+  {
+    std::fprintf(stderr, "no mesh selected (--meshes takes rocker, bunny, armadillo)\n");
+    return 1;
+  }
+  if(request.ranks < 1)
+  {
+    std::fprintf(stderr, "--ranks must be at least 1\n");
+    return 1;
+  }
+  try
+  {
+    return run_all(request);
+  }
+  catch(const std::exception& e) // SLEPc's start, a mesh's operators
+  {
+    std::fprintf(stderr, "bench_spectral --against-slepc: %s\n", e.what());
+    return 1;
+  }
+}
+
+} // namespace tvf_bench
