@@ -21,6 +21,7 @@
 
 
 #include <atomic>
+#include <cerrno>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -175,6 +176,15 @@ http::response<http::string_body> answer(const http::request<http::string_body>&
   return res;
 }
 
+// True when the other end closed the connection (an orderly shutdown or an error): a peek
+// that does not wait reads end-of-file instead of "nothing yet".
+bool peer_has_closed(tcp::socket& socket)
+{
+  char byte = 0;
+  const ssize_t got = ::recv(socket.native_handle(), &byte, 1, MSG_PEEK | MSG_DONTWAIT);
+  return got == 0 || (got < 0 && errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR);
+}
+
 // The editing session on an upgraded connection.  Messages are read in pieces so that one
 // over the size limit can be dropped and answered, instead of closing the connection.
 void run_websocket(tcp::socket socket, const http::request<http::string_body>& upgrade, const Server& server)
@@ -203,7 +213,13 @@ void run_websocket(tcp::socket socket, const http::request<http::string_body>& u
   {
     // While an exact answer is being computed, and no message of the page waits, send it
     // when ready (the page sees the reduced field at once and the exact one moments later).
-    while(session.refining() && ws.next_layer().available() == 0) session.poll(send, std::chrono::milliseconds(5));
+    // A page that went away ends the session at once: its refinement stops and what it
+    // held is freed, instead of pull-backs being computed for nobody.
+    while(session.refining() && ws.next_layer().available() == 0)
+    {
+      if(peer_has_closed(ws.next_layer())) return;
+      session.poll(send, std::chrono::milliseconds(5));
+    }
     buffer.clear();
     std::size_t received = 0;
     bool oversized = false;
