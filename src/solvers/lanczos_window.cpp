@@ -59,7 +59,13 @@ void lanczos_window(const Standard_eigenproblem& p, const Eigen::SparseMatrix<do
   space.reserve(n, max_basis + b);
   Eigen::MatrixXd& Q = space.Q;
   Eigen::MatrixXd& H = space.H;
-  Q.leftCols(b) = orthonormal_columns(random_block(b));
+  // The start block through the operator twice: a random vector has parts of size
+  // 1/sqrt(n) on every entry, and the Ritz vectors keep roundoff of that size.  Where the
+  // standard form has huge entries (tiny masses: a component a million times smaller,
+  // needle triangles) it is amplified far beyond the roundoff of the vectors' own entries
+  // (camel.off: true residuals stuck at 1e-10 .. 1e-8 however long the basis grew).
+  // Shift-and-invert scales every entry by the square root of its mass per application.
+  Q.leftCols(b) = orthonormal_columns(op(orthonormal_columns(op(random_block(b)))));
   int m = b, complete = 0;
   int next_check = std::min(max_basis, std::max(2 * b, wanted + wanted / 2));
   double estimate_factor = 0.5; // standard-form residual <= factor * tol (the estimate is exact up to roundoff)
@@ -85,7 +91,7 @@ void lanczos_window(const Standard_eigenproblem& p, const Eigen::SparseMatrix<do
     for(int i = 0; i < b; ++i)
       if(std::abs(R(i, i)) <= 1e-10 * std::max(scale, 1e-300))
       {
-        Eigen::MatrixXd x = random_block(1);
+        Eigen::MatrixXd x = op(orthonormal_columns(op(random_block(1)))); // as the start block
         for(int pass = 0; pass < 2; ++pass)
         {
           x -= Q.leftCols(m) * (Q.leftCols(m).transpose() * x);

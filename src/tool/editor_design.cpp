@@ -158,6 +158,7 @@ public:
 
   bool wait_exact(std::chrono::milliseconds timeout) override { return spline_->wait_until_exact(timeout); }
   std::string refinement_error() override { return spline_->refinement_error(); }
+  TVF::Spline_answer answer() override { return spline_->answer(); }
 
   Design_field field() override
   {

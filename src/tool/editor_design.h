@@ -10,6 +10,7 @@
 #ifndef TVF_TOOL_EDITOR_DESIGN_H
 #define TVF_TOOL_EDITOR_DESIGN_H
 
+#include <CGAL/Tangent_vector_fields/Refining_spline_solver.h>
 #include <CGAL/Tangent_vector_fields/Spline_solver.h>
 #include <CGAL/Tangent_vector_fields/Streamlines.h>
 #include <CGAL/Tangent_vector_fields/internal/constraint_json.h>
@@ -88,6 +89,8 @@ public:
   virtual bool wait_exact(std::chrono::milliseconds timeout) = 0;
   /// Why the exact answer cannot be had (empty if it can).
   virtual std::string refinement_error() = 0;
+  /// Which answer the design gives now (exact, or reduced with its pending pull-backs).
+  virtual TVF::Spline_answer answer() = 0;
 
   /// The field to show (after a value edit of one constraint: from its cached response).
   virtual Design_field field() = 0;

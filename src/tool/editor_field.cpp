@@ -49,6 +49,10 @@ void Editor_session::set_display(Request& r)
 
 bool Editor_session::refining() { return design_ && design_->full() && awaiting_exact_; }
 
+int Editor_session::constraints() const { return design_ ? static_cast<int>(design_->ids().size()) : 0; }
+
+int Editor_session::pending_pull_backs() { return design_ && design_->full() ? design_->answer().pending : 0; }
+
 void Editor_session::poll(const Send& send, std::chrono::milliseconds timeout)
 {
   if(!refining()) return;

@@ -151,6 +151,9 @@ public:
   /// Waits at most `timeout` for the exact answer and sends it (a `field` with `refined`,
   /// echoing the edit it completes), or a `refinement_failed` message if it cannot be had.
   void poll(const Send& send, std::chrono::milliseconds timeout);
+  /// The constraints of the design, and how many of them still lack their exact pull-back.
+  int constraints() const;
+  int pending_pull_backs();
 
 private:
   struct Request;

@@ -57,6 +57,7 @@ struct Server
   int max_connections = 16;
   std::atomic<int> connections{0};
   std::chrono::seconds stall_timeout{20};
+  bool quiet = false;
 };
 
 // Ends a connection that stalls in the middle of a request or a message (a half-open or
@@ -203,6 +204,27 @@ void run_websocket(tcp::socket socket, const http::request<http::string_body>& u
       [](websocket::response_type& res) { res.set(http::field::server, "tvf serve"); }));
   ws.accept(upgrade);
   Editor_session session(server.model);
+  struct Farewell // said on the console when a page goes away before its exact answer came
+  {
+    Editor_session& session;
+    const Server& server;
+    ~Farewell()
+    {
+      int pending = 0;
+      try
+      {
+        pending = session.refining() ? session.pending_pull_backs() : 0;
+      }
+      catch(const std::exception&) // a refusal of the full solver: nothing to say here
+      {
+      }
+      if(pending > 0 && !server.quiet)
+        std::printf("a page closed while its exact answer was being computed: refinement stopped with %d of %d "
+                    "constraints not pulled back\n",
+                    pending, session.constraints()),
+            std::fflush(stdout);
+    }
+  } farewell{session, server};
   const Send send = [&ws](const Outgoing& message) {
     ws.binary(message.binary);
     ws.write(asio::buffer(message.data));
@@ -391,6 +413,7 @@ int serve_command(const Arguments& args)
   server.web_root = command.has("web-root") ? command.get<std::string>("web-root") : std::string(TVF_EDITOR_DIST_DIR);
   server.max_connections = max_connections;
   server.stall_timeout = std::chrono::seconds(stall_timeout);
+  server.quiet = command.quiet();
   if(!std::ifstream(server.web_root + "/index.html"))
     std::fprintf(stderr, "tvf: warning: no editor page in '%s' (built with npm; see --web-root)\n",
                  server.web_root.c_str());

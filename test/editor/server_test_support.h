@@ -21,11 +21,13 @@
 #include <boost/property_tree/ptree.hpp>
 
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <map>
+#include <poll.h>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
@@ -64,33 +66,49 @@ public:
       _exit(127);
     }
     close(out[1]);
-    FILE* in = fdopen(out[0], "r");
-    char line[512];
-    while(std::fgets(line, sizeof line, in))
-    {
-      int p = 0;
-      if(std::sscanf(line, "listening on http://127.0.0.1:%d/", &p) == 1)
-      {
-        port_ = p;
-        break;
-      }
-    }
-    stdout_ = in; // kept open so the server's later prints do not hit a closed pipe
-    if(port_ == 0) throw std::runtime_error("the server did not start");
+    out_ = out[0]; // kept open so the server's later prints do not hit a closed pipe
+    std::string line;
+    if(!wait_for_line("listening on http://127.0.0.1:", line, std::chrono::seconds(60)) ||
+       std::sscanf(line.c_str(), "listening on http://127.0.0.1:%d/", &port_) != 1)
+      throw std::runtime_error("the server did not start");
   }
   ~Server_process()
   {
     kill(pid_, SIGTERM);
     waitpid(pid_, nullptr, 0);
-    if(stdout_) std::fclose(stdout_);
+    close(out_);
   }
   int port() const { return port_; }
   bool running() const { return waitpid(pid_, nullptr, WNOHANG) == 0; }
 
+  /// Reads the server's output until a line containing `text` (into `line`), or until the
+  /// timeout passes or the server closes its output (false).
+  bool wait_for_line(const std::string& text, std::string& line, std::chrono::seconds timeout)
+  {
+    const auto end = std::chrono::steady_clock::now() + timeout;
+    for(;;)
+    {
+      for(std::size_t eol; (eol = output_.find('\n')) != std::string::npos;)
+      {
+        line = output_.substr(0, eol);
+        output_.erase(0, eol + 1);
+        if(line.find(text) != std::string::npos) return true;
+      }
+      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(end - std::chrono::steady_clock::now());
+      pollfd p = {out_, POLLIN, 0};
+      if(left.count() <= 0 || ::poll(&p, 1, int(left.count())) <= 0) return false;
+      char chunk[4096];
+      const ssize_t got = ::read(out_, chunk, sizeof chunk);
+      if(got <= 0) return false;
+      output_.append(chunk, std::size_t(got));
+    }
+  }
+
 private:
   pid_t pid_ = -1;
   int port_ = 0;
-  FILE* stdout_ = nullptr;
+  int out_ = -1;
+  std::string output_; // read, not yet taken as lines
 };
 
 // --- a WebSocket client ---------------------------------------------------------------------------

@@ -149,4 +149,44 @@ TEST_F(Server_test, stalled_clients_are_disconnected)
   EXPECT_EQ(idle.client.expect("pong").json.get<int>("request"), 2);
 }
 
+TEST(Server_refinement, a_page_that_goes_away_while_refining_stops_the_refinement)
+{
+  // A constraint file of 30 vectors loaded at once on a mesh of 20k faces: the reduced
+  // answer comes at once, the 30 pull-backs (milliseconds each) after it.  The page closes
+  // as soon as it has the reduced field; the server must notice at once and stop, not
+  // compute the rest for nobody.  It says so on its console, with the count of constraints
+  // left without their pull-back (none would be left had it gone on until the exact field).
+  Server_process server({TVF_TOOL, "serve", std::string(TVF_CGAL_DATA_DIR) + "/meshes/camel.off", "-n", "300",
+                         "--port", "0"});
+  std::string line;
+  ASSERT_TRUE(server.wait_for_line("basis ready", line, std::chrono::seconds(120)));
+  const int constraints = 30;
+  {
+    Server_test::Session s(server.port());
+    const int faces = s.info.json.get<int>("mesh.faces");
+    s.client.send("{\"type\":\"set_display\",\"lines\":\"none\"}");
+    s.client.expect("field");
+    s.client.send("{\"type\":\"set_solver\",\"solver\":\"full\"}"); // the full solver is made
+    while(!s.client.expect("field").json.get<bool>("answer.exact"))
+      ;
+    std::string file = "{\"constraints\":[";
+    for(int k = 0; k < constraints; ++k)
+    {
+      const int face = int((k * 7919LL) % faces);
+      file += (k ? "," : "") + vector_constraint(face, tangent(s.mesh, face));
+    }
+    s.client.send("{\"type\":\"load\",\"file\":" + file + "],\"omega\":0}}");
+    EXPECT_EQ(s.client.expect("loaded").json.get_child("ids").size(), std::size_t(constraints));
+    const Message field = s.client.expect("field");
+    ASSERT_FALSE(field.json.get<bool>("answer.exact"));
+    s.client.stream().next_layer().close();
+  }
+  ASSERT_TRUE(server.wait_for_line("a page closed while its exact answer was being computed", line,
+                                   std::chrono::seconds(30)));
+  int pending = -1, total = -1;
+  ASSERT_EQ(std::sscanf(line.c_str(), "%*[^0-9]%d of %d", &pending, &total), 2) << line;
+  EXPECT_EQ(total, constraints) << line;
+  EXPECT_GT(pending, 0) << line;
+}
+
 } // namespace
