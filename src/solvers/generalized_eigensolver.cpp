@@ -137,9 +137,11 @@ Eigenpairs lowest_eigenpairs(const Sparse_matrix& A, const Eigen::VectorXd& d, i
   {
     result.vectors = p.inv_sqrt_d.asDiagonal() * subspace;
     purify(A, p, result, count, accurate);
-    if(!accurate())
-      throw Numerical_failure("eigenproblem: an eigenpair misses the tolerance after refinement (residual " +
-                              std::to_string(result.residuals.maxCoeff()) + ")");
+    // Inverse iteration can stall above the tolerance where faces are extremely thin
+    // (CGAL's ALSTOM_TEST4.off, angles of 0.02 degrees: residuals 5e-10 .. 1.4e-9 over 60
+    // steps, against 1e-10), while Lanczos runs from a block the operator has smoothed
+    // reach it; so do those.
+    if(!accurate()) return internal::sliced_eigenpairs(p, count, options);
   }
   // Complete by construction; the inertia count is recorded all the same.
   if(count < n - c) result.completeness = check_completeness(A, d, result.values, c, count);

@@ -444,8 +444,12 @@ Eigenpairs sliced_eigenpairs(const Standard_eigenproblem& p, int count, const Ei
   {
     Ritz_pair& pair = found[order[i]];
     if(!(pair.residual <= pair.tolerance))
-      throw Numerical_failure("spectrum slicing: an eigenpair misses the tolerance (residual " +
-                              std::to_string(pair.residual) + ")");
+    {
+      std::ostringstream message;
+      message << "spectrum slicing: an eigenpair misses the tolerance (residual " << pair.residual << " > "
+              << pair.tolerance << ")";
+      throw Numerical_failure(message.str());
+    }
     result.values[i] = pair.value;
     result.residuals[i] = pair.residual;
     result.vectors.col(i) = p.inv_sqrt_d.cwiseProduct(pair.vector);

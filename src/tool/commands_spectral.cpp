@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <sstream>
 
 namespace tvf_tool {
 
@@ -393,8 +394,12 @@ int basis_info_command(const Arguments& args)
   const bool single = b.precision() == TVF::Eigenfunction_precision::float32;
   if(single) say("  (float32 eigenfunctions: orthonormality checked to 1e-5, the residual not checked)\n");
   if(!(orthonormality < (single ? 1e-5 : 1e-6)) || !(single || residual < 1e-6))
-    throw Tool_error("basis file '" + path + "' fails its check (orthonormality " + std::to_string(orthonormality) +
-                     ", residual " + std::to_string(residual) + ")");
+  {
+    std::ostringstream message; // scientific: a failing 1e-7 must not read as 0.000000
+    message << "basis file '" << path << "' fails its check (orthonormality " << orthonormality << ", residual "
+            << residual << ")";
+    throw Tool_error(message.str());
+  }
   say("  the basis is fine\n");
   return 0;
 }
