@@ -164,7 +164,7 @@ void lanczos_window(const Standard_eigenproblem& p, const Eigen::SparseMatrix<do
         basis_used = std::max(basis_used, complete);
         return;
       }
-      estimate_factor *= 1e-2; // the estimate was optimistic: ask for more
+      estimate_factor = std::max(estimate_factor * 1e-2, 1e-6); // the estimate was optimistic: ask for more
     }
     if(exhausted)
     {
