@@ -27,6 +27,10 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 #include <functional>
 #include <iostream>
 #include <random>
@@ -51,6 +55,25 @@ struct Source
 std::shared_ptr<TVF::Hodge_solver> load(const std::string& dir, const Source& s, int& faces)
 {
   return tvf_bench::load_mesh(dir, s.file, s.subdivisions, faces);
+}
+
+// Peak resident memory of this process (Linux: VmHWM, in GB) since the last reset (writing 5 to
+// /proc/self/clear_refs), so that each mesh's set-up is measured on its own; -1 if unknown.
+// The previous mesh's memory is given back first (glibc keeps freed pages otherwise).
+void reset_peak_memory()
+{
+#ifdef __GLIBC__
+  malloc_trim(0);
+#endif
+  std::ofstream("/proc/self/clear_refs") << "5";
+}
+
+double peak_memory_gb()
+{
+  std::ifstream status("/proc/self/status");
+  for(std::string line; std::getline(status, line);)
+    if(line.rfind("VmHWM:", 0) == 0) return std::atof(line.c_str() + 6) / (1024. * 1024.);
+  return -1;
 }
 
 std::string completeness(const TVF::Basis_report& r)
@@ -171,16 +194,20 @@ int main(int argc, char** argv)
   std::printf("Spectral basis benchmark: %d exact + %d coexact eigenfields (+ harmonic), one run each, seconds.\n"
               "set-up = operators + both eigenproblems + harmonic fields; residual = largest\n"
               "|D^-1/2 (A x - l D x)| / (l |D^1/2 x|); complete = inertia/expected of the exact and the coexact\n"
-              "problem at the last window boundary (Sylvester: eigenvalues below it / pairs found + kernel)\n\n",
+              "problem at the last window boundary (Sylvester: eigenvalues below it / pairs found + kernel);\n"
+              "peak = largest resident memory of the process during the set-up (GB, the mesh loaded before it\n"
+              "included); basis = eigenfunctions and harmonic fields kept (GB)\n\n",
               exact, coexact);
-  std::printf("%-10s %8s %4s | %7s %7s %7s %7s %8s | %7s %7s %7s | %9s %s\n", "mesh", "faces", "dimH", "ops",
-              "exact", "coexact", "harm.", "set-up", "thesis", "target", "speedup", "residual", "complete");
+  std::printf("%-10s %8s %4s | %7s %7s %7s %7s %8s | %6s %6s | %7s %7s %7s | %9s %s\n", "mesh", "faces", "dimH", "ops",
+              "exact", "coexact", "harm.", "set-up", "peak", "basis", "thesis", "target", "speedup", "residual",
+              "complete");
   for(const Source& s : sources)
   {
     if(which.find(s.key) == std::string::npos) continue;
     int faces = 0;
     auto solver = load(dir, s, faces);
     if(!solver) continue;
+    reset_peak_memory();
     const auto start = std::chrono::steady_clock::now();
     const auto& ops = solver->operators();
     ops.G(), ops.G_star_interior(), ops.W(), ops.W_star(), ops.field_masses();
@@ -189,10 +216,12 @@ int main(int argc, char** argv)
     basis_options.threads = threads;
     TVF::Eigenfield_basis basis(solver, TVF::Basis_request::per_type(exact, coexact), basis_options);
     const double total = seconds_since(start);
+    const double peak = peak_memory_gb();
     const TVF::Basis_report& r = basis.report();
-    std::printf("%-10s %8d %4d | %7.2f %7.2f %7.2f %7.2f %8.2f | %7.0f %7.0f %7.1fx | %9.1e %s%s\n", s.key.c_str(),
-                faces, basis.number_of_harmonic(), ops_seconds, r.exact_seconds, r.coexact_seconds,
-                r.harmonic_seconds, total, s.thesis_seconds, s.target_seconds, s.thesis_seconds / total,
+    std::printf("%-10s %8d %4d | %7.2f %7.2f %7.2f %7.2f %8.2f | %6.2f %6.2f | %7.0f %7.0f %7.1fx | %9.1e %s%s\n",
+                s.key.c_str(), faces, basis.number_of_harmonic(), ops_seconds, r.exact_seconds, r.coexact_seconds,
+                r.harmonic_seconds, total, peak, basis.memory_bytes() / 1e9, s.thesis_seconds, s.target_seconds,
+                s.thesis_seconds / total,
                 r.max_residual, completeness(r).c_str(), total <= s.target_seconds ? "" : "  (target missed)");
     std::fflush(stdout);
   }
@@ -200,26 +229,27 @@ int main(int argc, char** argv)
   const Source& rocker = sources[0];
   if(sweep)
   {
-    std::printf("\nBasis size sweep on %s (lowest d, merged): time, residual, completeness, and agreement of the "
-                "first 50 eigenvalues with the largest basis\n",
+    std::printf("\nBasis size sweep on %s (lowest d, merged): time, peak memory and basis memory (GB), residual,\n"
+                "completeness, and agreement of the first 50 eigenvalues with the largest basis\n",
                 rocker.file.c_str());
-    std::printf("%6s %8s %9s %14s %12s\n", "d", "seconds", "residual", "complete", "eig. diff");
+    std::printf("%6s %8s %6s %6s %9s %14s %12s\n", "d", "seconds", "peak", "basis", "residual", "complete", "eig. diff");
     int faces = 0;
     Eigen::VectorXd reference;
     for(int d : {2000, 1000, 500, 200, 100})
     {
       auto solver = load(dir, rocker, faces);
       if(!solver) break;
+      reset_peak_memory();
       const auto start = std::chrono::steady_clock::now();
       TVF::Eigenfield_basis basis(solver, TVF::Basis_request::lowest(d));
-      const double t = seconds_since(start);
+      const double t = seconds_since(start), peak = peak_memory_gb();
       if(reference.size() == 0) reference = basis.eigenvalues().head(50);
       const Eigen::VectorXd head = basis.eigenvalues().head(50);
       double diff = 0;
       for(int k = 0; k < 50; ++k)
         if(reference[k] > 0) diff = std::max(diff, std::abs(head[k] - reference[k]) / reference[k]);
-      std::printf("%6d %8.2f %9.1e %14s %12.1e\n", d, t, basis.report().max_residual,
-                  completeness(basis.report()).c_str(), diff);
+      std::printf("%6d %8.2f %6.2f %6.2f %9.1e %14s %12.1e\n", d, t, peak, basis.memory_bytes() / 1e9,
+                  basis.report().max_residual, completeness(basis.report()).c_str(), diff);
       std::fflush(stdout);
     }
   }
