@@ -117,8 +117,9 @@ std::vector<double> off_numbers(const std::string& line)
 // unchecked: it converts a negative or fractional count to std::size_t (undefined) and
 // allocates a huge one before it finds the numbers missing (3 GB for a 3 KB file).  Returns the
 // reason to refuse an ASCII OFF file whose facet line announces more vertices than it holds,
-// or "" (also for what this check does not follow, e.g. binary OFF: CGAL decides).  Found by
-// test/fuzz's mesh target.
+// or "" (also for what this check does not follow, e.g. binary OFF: CGAL decides); and one
+// whose header announces more vertices and facets than the file can hold.  Found by test/fuzz's
+// mesh target.
 std::string off_facet_defect(const std::string& path)
 {
   std::ifstream in(path, std::ios::binary);
@@ -147,6 +148,13 @@ std::string off_facet_defect(const std::string& path)
   }
   if(counts.size() < 2 || !(counts[0] >= 0 && counts[0] <= 1e9) || !(counts[1] >= 0 && counts[1] <= 1e9)) return "";
   const long long vertices = static_cast<long long>(counts[0]), facets = static_cast<long long>(counts[1]);
+  // CGAL reserves the announced counts before reading (433 million facets in a 53-byte file:
+  // gigabytes).  A vertex or a facet takes at least a number and a separator: 2 bytes.
+  std::ifstream size_probe(path, std::ios::binary | std::ios::ate);
+  const long long bytes = static_cast<long long>(size_probe.tellg());
+  if(2 * (vertices + facets) > bytes)
+    return "the header announces " + std::to_string(vertices) + " vertices and " + std::to_string(facets) +
+           " facets, more than a file of " + std::to_string(bytes) + " bytes can hold";
   for(long long v = 0; v < vertices; ++v)
     if(!next_line()) return ""; // one vertex a line, as CGAL reads them
   for(long long f = 0; f < facets && next_line(); ++f)

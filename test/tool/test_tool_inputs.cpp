@@ -173,6 +173,11 @@ TEST(MeshInput, OffFacetCountBeyondItsLineIsRefused)
                               "380400716.000000 vertices but its line holds 3 numbers after the count)");
   const std::string good = file_with("good_facet.off", "OFF 3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 255 0 0\n");
   EXPECT_EQ(read_mesh_file(good).polygons.size(), 1u);
+  // CGAL reserved the announced facets before reading them: 433 million in a 53-byte file.
+  const std::string announced = file_with("announced_facets.off", "OFF\n4 433333333 0 1\n3 0 2 1\n3 0 1 3\n"
+                                                                  "3 1 2 3\n3 0 3 2\n");
+  EXPECT_EQ(mesh_error(announced), "cannot read a polygon mesh from '" + announced + "' (malformed OFF: the header "
+                                   "announces 4 vertices and 433333333 facets, more than a file of 52 bytes can hold)");
 }
 
 // fuzz_mesh: CGAL's PLY reader crashed (a null dereference) on a property line before any
