@@ -11,6 +11,7 @@
 #include <CGAL/IO/GOCAD.h>
 #include <CGAL/IO/OBJ.h>
 #include <CGAL/IO/OFF.h>
+#include <CGAL/IO/OFF/File_header_OFF.h>
 #include <CGAL/IO/PLY.h>
 #include <CGAL/IO/STL.h>
 
@@ -113,6 +114,13 @@ std::vector<double> off_numbers(const std::string& line)
   return numbers;
 }
 
+std::string off_number(double x)
+{
+  std::ostringstream out;
+  out << x;
+  return out.str();
+}
+
 // CGAL 5.5's OFF reader takes a facet's vertex count from the first number of its line
 // unchecked: it converts a negative or fractional count to std::size_t (undefined) and
 // allocates a huge one before it finds the numbers missing (3 GB for a 3 KB file).  Returns the
@@ -122,8 +130,21 @@ std::vector<double> off_numbers(const std::string& line)
 // mesh target.
 std::string off_facet_defect(const std::string& path)
 {
-  std::ifstream in(path, std::ios::binary);
-  std::string line, keyword;
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  const double bytes = static_cast<double>(in.tellg());
+  in.seekg(0);
+  // The header is read by CGAL's own scanner, so that every header it accepts ("COFF\x91 5 30 0",
+  // "OFF'4 ...") is checked as CGAL understands it; the lines after it are followed here.
+  CGAL::File_header_OFF header(false);
+  if(!(in >> header) || header.binary()) return ""; // CGAL fails on it, or decides (binary)
+  const long long vertices = static_cast<long long>(header.size_of_vertices()),
+                  facets = static_cast<long long>(header.size_of_facets());
+  // CGAL reserves the announced counts before reading (433 million facets in a 53-byte file:
+  // gigabytes).  A vertex or a facet takes at least a number and a separator: 2 bytes.
+  if(2 * (double(vertices) + double(facets)) > bytes)
+    return "the header announces " + std::to_string(vertices) + " vertices and " + std::to_string(facets) +
+           " facets, more than a file of " + std::to_string(static_cast<long long>(bytes)) + " bytes can hold";
+  std::string line;
   // Lines with content, comments and blank lines skipped as CGAL's scanner skips them.
   const auto next_line = [&]() -> bool {
     while(std::getline(in, line))
@@ -133,30 +154,28 @@ std::string off_facet_defect(const std::string& path)
     }
     return false;
   };
-  if(!next_line()) return "";
-  std::istringstream header(line.substr(0, line.find('#')));
-  header >> keyword;
-  if(keyword != "OFF" && keyword != "COFF" && keyword != "NOFF" && keyword != "CNOFF") return "";
-  std::string rest;
-  std::getline(header, rest);
-  if(rest.find("BINARY") != std::string::npos) return "";
-  std::vector<double> counts = off_numbers(rest);
-  if(counts.empty())
-  {
-    if(!next_line()) return "";
-    counts = off_numbers(line);
-  }
-  if(counts.size() < 2 || !(counts[0] >= 0 && counts[0] <= 1e9) || !(counts[1] >= 0 && counts[1] <= 1e9)) return "";
-  const long long vertices = static_cast<long long>(counts[0]), facets = static_cast<long long>(counts[1]);
-  // CGAL reserves the announced counts before reading (433 million facets in a 53-byte file:
-  // gigabytes).  A vertex or a facet takes at least a number and a separator: 2 bytes.
-  std::ifstream size_probe(path, std::ios::binary | std::ios::ate);
-  const long long bytes = static_cast<long long>(size_probe.tellg());
-  if(2 * (vertices + facets) > bytes)
-    return "the header announces " + std::to_string(vertices) + " vertices and " + std::to_string(facets) +
-           " facets, more than a file of " + std::to_string(bytes) + " bytes can hold";
+  // CGAL sets an error for a line too short but reads its colour first, past its end; and with
+  // colours (COFF) it reads 3 colour entries from a line whose entries after its data are not
+  // 0, 1, 3 or 4.
+  const bool colours = header.has_colors();
+  const std::size_t homogeneous = header.is_homogeneous() ? 1 : 0;
+  const std::size_t vertex_numbers = (3 + homogeneous) * (header.has_normals() ? 2 : 1) +
+                                     (header.has_textures() ? 2 + homogeneous : 0);
+  const auto line_defect = [&](const std::string& what, long long k, std::size_t numbers, std::size_t needed) {
+    if(numbers < needed)
+      return what + " " + std::to_string(k) + " starts with " + std::to_string(numbers) + " numbers where " +
+             std::to_string(needed) + " are needed ('" + line.substr(0, 40) + "')";
+    const std::size_t extra = numbers - needed;
+    if(!colours || extra == 0 || extra == 1 || extra == 3 || extra == 4) return std::string();
+    return what + " " + std::to_string(k) + " has " + std::to_string(extra) +
+           " numbers after its data; a colour has 1, 3 or 4";
+  };
   for(long long v = 0; v < vertices; ++v)
+  {
     if(!next_line()) return ""; // one vertex a line, as CGAL reads them
+    const std::string defect = line_defect("vertex", v, off_numbers(line).size(), vertex_numbers);
+    if(!defect.empty()) return defect;
+  }
   for(long long f = 0; f < facets && next_line(); ++f)
   {
     const std::vector<double> numbers = off_numbers(line);
@@ -165,6 +184,13 @@ std::string off_facet_defect(const std::string& path)
     if(!(count >= 0 && count == std::floor(count) && count <= double(numbers.size() - 1)))
       return "facet " + std::to_string(f) + " announces " + std::to_string(count) + " vertices but its line holds " +
              std::to_string(numbers.size() - 1) + " numbers after the count";
+    const std::string defect = line_defect("facet", f, numbers.size(), 1 + static_cast<std::size_t>(count));
+    if(!defect.empty()) return defect;
+    // CGAL converts each index (read as a double) to std::size_t unchecked: 1e90 is undefined.
+    for(std::size_t k = 1; k <= static_cast<std::size_t>(count); ++k)
+      if(!(numbers[k] >= 0 && numbers[k] < double(vertices) && numbers[k] == std::floor(numbers[k])))
+        return "facet " + std::to_string(f) + " has the vertex index " + off_number(numbers[k]) +
+               ", not a whole number below the " + std::to_string(vertices) + " vertices";
   }
   return "";
 }

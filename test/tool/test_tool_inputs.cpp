@@ -178,6 +178,18 @@ TEST(MeshInput, OffFacetCountBeyondItsLineIsRefused)
                                                                   "3 1 2 3\n3 0 3 2\n");
   EXPECT_EQ(mesh_error(announced), "cannot read a polygon mesh from '" + announced + "' (malformed OFF: the header "
                                    "announces 4 vertices and 433333333 facets, more than a file of 52 bytes can hold)");
+  // CGAL converted each vertex index to std::size_t unchecked (1.2e90: undefined behaviour).
+  const std::string index = file_with("huge_index.off", header + "3 0 1 1.2e90\n");
+  EXPECT_EQ(mesh_error(index), "cannot read a polygon mesh from '" + index + "' (malformed OFF: facet 0 has the "
+                               "vertex index 1.2e+90, not a whole number below the 3 vertices)");
+  // With colours, CGAL read 3 colour entries from a line with 2 after its data (past its end).
+  const std::string colour = file_with("two_colour_entries.off", "COFF\n3 1 0\n0 0 0\n1 0 0 7 7\n0 1 0\n3 0 1 2\n");
+  EXPECT_EQ(mesh_error(colour), "cannot read a polygon mesh from '" + colour + "' (malformed OFF: vertex 1 has 2 "
+                                "numbers after its data; a colour has 1, 3 or 4)");
+  // CGAL's scanner takes "OFF'4" for a keyword and its counts: the header is read by that scanner.
+  const std::string odd = file_with("odd_keyword.off", "OFF'4 433333333 0 1\n3 0 2 1\n");
+  EXPECT_EQ(mesh_error(odd), "cannot read a polygon mesh from '" + odd + "' (malformed OFF: the header announces "
+                             "4 vertices and 433333333 facets, more than a file of 28 bytes can hold)");
 }
 
 // fuzz_mesh: CGAL's PLY reader crashed (a null dereference) on a property line before any

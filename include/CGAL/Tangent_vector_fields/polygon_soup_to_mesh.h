@@ -131,6 +131,14 @@ void triangulate_polygon(const std::vector<Point>& points, const std::vector<std
 {
   namespace PMP = CGAL::Polygon_mesh_processing;
   typedef CGAL::Surface_mesh<Point> Scratch;
+  const auto fan = [&] {
+    for(std::size_t k = 1; k + 1 < polygon.size(); ++k) triangles.push_back({{polygon[0], polygon[k], polygon[k + 1]}});
+  };
+  // CGAL's constrained triangulation dereferences a null handle on a polygon with two corners
+  // at one point (found by test/fuzz's mesh target): such a polygon is cut as a fan.
+  std::set<Point> distinct;
+  for(std::size_t v : polygon) distinct.insert(points[v]);
+  if(distinct.size() < polygon.size()) return fan();
   std::vector<typename Scratch::Vertex_index> corners;
   for(std::size_t v : polygon)
   {
@@ -157,7 +165,7 @@ void triangulate_polygon(const std::vector<Point>& points, const std::vector<std
     }
     return;
   }
-  for(std::size_t k = 1; k + 1 < polygon.size(); ++k) triangles.push_back({{polygon[0], polygon[k], polygon[k + 1]}});
+  fan();
 }
 
 // Counts what `orient_polygon_soup` does (CGAL copies the visitor: keep pointers).
