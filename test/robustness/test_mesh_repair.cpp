@@ -159,6 +159,21 @@ TEST(Repair, LargerPolygonsAreTriangulated)
   EXPECT_EQ(std::count(r.origin.begin(), r.origin.end(), 0u), 4);
 }
 
+TEST(Repair, PolygonWithTwoCornersAtOnePointIsCutAsAFan)
+{
+  // A pentagon whose corners 1 and 2 are distinct points of the soup at one position:
+  // CGAL's constrained triangulation dereferenced a null handle on it (found by the mesh
+  // fuzzer).  It is cut as a fan from its first corner: 3 triangles, every corner kept.
+  Polygon_soup soup;
+  soup.points = {Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(1, 0, 0), Point_3(1, 1, 0), Point_3(0, 1, 0)};
+  soup.polygons.push_back({0, 1, 2, 3, 4});
+  const Repaired r = repair(soup);
+  EXPECT_EQ(r.report.triangulated_polygons, 1u);
+  EXPECT_EQ(r.report.triangles_from_polygons, 3u);
+  EXPECT_EQ(r.mesh.number_of_faces(), 3u);
+  EXPECT_EQ(r.mesh.number_of_vertices(), 5u);
+}
+
 TEST(Repair, ShuffledOrientationsAreMadeConsistent)
 {
   const Mesh sphere = make_icosphere(2);
