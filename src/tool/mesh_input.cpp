@@ -172,12 +172,16 @@ std::string off_facet_defect(const std::string& path)
   };
   for(long long v = 0; v < vertices; ++v)
   {
-    if(!next_line()) return ""; // one vertex a line, as CGAL reads them
+    // One vertex a line, as CGAL reads them; CGAL reads the colour of a missing line too.
+    if(!next_line())
+      return "the file ends after " + std::to_string(v) + " of its " + std::to_string(vertices) + " vertices";
     const std::string defect = line_defect("vertex", v, off_numbers(line).size(), vertex_numbers);
     if(!defect.empty()) return defect;
   }
-  for(long long f = 0; f < facets && next_line(); ++f)
+  for(long long f = 0; f < facets; ++f)
   {
+    if(!next_line())
+      return "the file ends after " + std::to_string(f) + " of its " + std::to_string(facets) + " facets";
     const std::vector<double> numbers = off_numbers(line);
     if(numbers.empty()) return ""; // CGAL fails on it
     const double count = numbers[0];

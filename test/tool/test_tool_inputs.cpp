@@ -186,6 +186,10 @@ TEST(MeshInput, OffFacetCountBeyondItsLineIsRefused)
   const std::string colour = file_with("two_colour_entries.off", "COFF\n3 1 0\n0 0 0\n1 0 0 7 7\n0 1 0\n3 0 1 2\n");
   EXPECT_EQ(mesh_error(colour), "cannot read a polygon mesh from '" + colour + "' (malformed OFF: vertex 1 has 2 "
                                 "numbers after its data; a colour has 1, 3 or 4)");
+  // CGAL read the colour of a vertex line that is not there (past the end of no numbers).
+  const std::string short_file = file_with("ends_early.off", "COFF\n5 3 0\n0 0 1\n2 0 1\n");
+  EXPECT_EQ(mesh_error(short_file), "cannot read a polygon mesh from '" + short_file + "' (malformed OFF: the file ends "
+                                    "after 2 of its 5 vertices)");
   // CGAL's scanner takes "OFF'4" for a keyword and its counts: the header is read by that scanner.
   const std::string odd = file_with("odd_keyword.off", "OFF'4 433333333 0 1\n3 0 2 1\n");
   EXPECT_EQ(mesh_error(odd), "cannot read a polygon mesh from '" + odd + "' (malformed OFF: the header announces "
