@@ -80,18 +80,37 @@ std::string ply_header_defect(const std::string& path)
   std::ifstream in(path, std::ios::binary | std::ios::ate);
   const std::streamoff bytes = in.tellg();
   in.seekg(0);
-  std::string line;
+  std::string line, element;
+  std::set<std::string> properties; // of the element being declared
   bool element_seen = false;
+  // CGAL reads a vertex's coordinates from its properties x, y and z without checking that they
+  // exist (a null dereference): a vertex element must declare all three.
+  const auto vertex_defect = [&]() -> std::string {
+    if(element != "vertex") return "";
+    for(const char* c : {"x", "y", "z"})
+      if(!properties.count(c)) return std::string("element 'vertex' has no property '") + c + "'";
+    return "";
+  };
   for(int n = 0; n < 100000 && std::getline(in, line); ++n)
   {
     std::istringstream words(line);
     std::string keyword, name, count;
     words >> keyword;
-    if(keyword == "end_header") break;
+    if(keyword == "end_header") return vertex_defect();
     if(keyword == "property" && !element_seen) return "a property before any element";
+    if(keyword == "property")
+    {
+      std::string type, last;
+      while(words >> type) last = type; // the name ends the line ("property list uchar int vertex_indices")
+      properties.insert(last);
+    }
     if(keyword != "element") continue;
+    const std::string defect = vertex_defect();
+    if(!defect.empty()) return defect;
     element_seen = true;
     words >> name >> count;
+    element = name;
+    properties.clear();
     // Every item of an element takes a byte at least, unless it has no properties: a count
     // up to the file's size is plenty.
     if(count.empty() || count.size() > 18 || count.find_first_not_of("0123456789") != std::string::npos ||

@@ -212,6 +212,11 @@ TEST(MeshInput, PlyPropertyBeforeAnyElementIsRefused)
     EXPECT_EQ(std::string(e.what()), "cannot read a polygon mesh from '" + path +
                                          "' (malformed PLY header: a property before any element)");
   }
+  // CGAL read the coordinates of a vertex element without x (a null dereference).
+  const std::string no_x = file_with("vertex_without_x.ply", "ply\nformat ascii 1.0\nelement vertex 1\n"
+                                                             "property double y\nproperty double z\nend_header\n0 0\n");
+  EXPECT_EQ(mesh_error(no_x), "cannot read a polygon mesh from '" + no_x +
+                                  "' (malformed PLY header: element 'vertex' has no property 'x')");
 }
 
 // fuzz_mesh: CGAL's PLY reader took an element count of "-1.01" as 2^64 - 1 and looped over
