@@ -82,7 +82,7 @@ std::string ply_header_defect(const std::string& path)
   in.seekg(0);
   std::string line, element;
   std::set<std::string> properties; // of the element being declared
-  bool element_seen = false;
+  bool element_seen = false, format_seen = false;
   // CGAL reads a vertex's coordinates from its properties x, y and z without checking that they
   // exist (a null dereference): a vertex element must declare all three.
   const auto vertex_defect = [&]() -> std::string {
@@ -96,6 +96,16 @@ std::string ply_header_defect(const std::string& path)
     std::istringstream words(line);
     std::string keyword, name, count;
     words >> keyword;
+    // A garbled format line left CGAL guessing the encoding (6 GB for a list read as binary).
+    if(keyword == "format")
+    {
+      std::string kind, version;
+      words >> kind >> version;
+      if(kind != "ascii" && kind != "binary_little_endian" && kind != "binary_big_endian")
+        return "the format '" + kind.substr(0, 40) + "' is not ascii, binary_little_endian or binary_big_endian";
+      format_seen = true;
+    }
+    if((keyword == "end_header" || keyword == "element") && !format_seen) return "no format line before the elements";
     if(keyword == "end_header") return vertex_defect();
     if(keyword == "property" && !element_seen) return "a property before any element";
     if(keyword == "property")

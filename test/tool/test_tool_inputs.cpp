@@ -212,6 +212,11 @@ TEST(MeshInput, PlyPropertyBeforeAnyElementIsRefused)
     EXPECT_EQ(std::string(e.what()), "cannot read a polygon mesh from '" + path +
                                          "' (malformed PLY header: a property before any element)");
   }
+  // A garbled format line left CGAL guessing the encoding (it allocated 6 GB for a list).
+  const std::string garbled = file_with("garbled_format.ply", "ply\nformaqt ascii 1.0\nelement vertex 1\n"
+                                                              "property double x\nend_header\n0\n");
+  EXPECT_EQ(mesh_error(garbled), "cannot read a polygon mesh from '" + garbled +
+                                     "' (malformed PLY header: no format line before the elements)");
   // CGAL read the coordinates of a vertex element without x (a null dereference).
   const std::string no_x = file_with("vertex_without_x.ply", "ply\nformat ascii 1.0\nelement vertex 1\n"
                                                              "property double y\nproperty double z\nend_header\n0 0\n");
