@@ -150,14 +150,12 @@ std::string off_number(double x)
   return out.str();
 }
 
-// CGAL 5.5's OFF reader takes a facet's vertex count from the first number of its line
-// unchecked: it converts a negative or fractional count to std::size_t (undefined) and
-// allocates a huge one before it finds the numbers missing (3 GB for a 3 KB file).  Returns the
-// reason to refuse an ASCII OFF file whose facet line announces more vertices than it holds,
-// or "" (also for what this check does not follow, e.g. binary OFF: CGAL decides); and one
-// whose header announces more vertices and facets than the file can hold.  Found by test/fuzz's
-// mesh target.
-std::string off_facet_defect(const std::string& path)
+// CGAL 5.5's OFF reader trusts what an ASCII file announces: it reserves the header's counts,
+// converts a facet's vertex count and indices to std::size_t unchecked (undefined for negative,
+// fractional or huge ones), and reads colour entries past the end of short lines or of lines
+// that are missing.  Returns the reason to refuse such a file, read as CGAL's scanner reads it,
+// or "" (also for binary OFF: CGAL decides).  Each case was found by test/fuzz's mesh target.
+std::string off_structure_defect(const std::string& path)
 {
   std::ifstream in(path, std::ios::binary | std::ios::ate);
   const double bytes = static_cast<double>(in.tellg());
@@ -271,7 +269,7 @@ Mesh_file read_mesh_file(const std::string& path)
                      " (the tool reads .off, .obj, .ply, .stl and .ts)");
   if(ext == "off")
   {
-    const std::string defect = off_facet_defect(path);
+    const std::string defect = off_structure_defect(path);
     if(!defect.empty()) throw Tool_error("cannot read a polygon mesh from '" + path + "' (malformed OFF: " + defect + ")");
   }
   if(ext == "ply")
