@@ -36,9 +36,11 @@ void Full_spline_solver::pull_back(std::vector<Row>& rows) const
   if(const double seconds = Q.factor()) statistics_.factor_seconds = seconds;
   const auto start = std::chrono::steady_clock::now();
   const int m = static_cast<int>(rows.size());
-  Eigen::MatrixXd R = Eigen::MatrixXd::Zero(space_dimension(), m);
+  std::vector<Eigen::Triplet<double>> entries;
   for(int j = 0; j < m; ++j)
-    for(const auto& e : rows[j].row.entries) R(e.first, j) += e.second;
+    for(const auto& e : rows[j].row.entries) entries.emplace_back(e.first, j, e.second);
+  Eigen::SparseMatrix<double> R(space_dimension(), m);
+  R.setFromTriplets(entries.begin(), entries.end()); // repeated entries add up
   Eigen::MatrixXd H;
   const Eigen::MatrixXd Y = Q.apply(R, H, statistics_.residual);
   for(int j = 0; j < m; ++j)

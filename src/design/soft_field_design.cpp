@@ -244,13 +244,18 @@ void Full_soft_design::rows_added(std::vector<Weighted_row>& rows)
   const Eigen::Index n = operators_->field_masses().size(), m = static_cast<Eigen::Index>(rows.size());
   // Each row divided by a power of two near its largest entry (divergence rows of a tiny
   // mesh are huge), the pull-back multiplied back: exact.
-  Eigen::MatrixXd R = Eigen::MatrixXd::Zero(n, m);
+  std::vector<Eigen::Triplet<double>> entries;
+  for(Eigen::Index j = 0; j < m; ++j)
+    for(const auto& e : rows[j].row.entries) entries.emplace_back(e.first, j, e.second);
+  Eigen::SparseMatrix<double> R(n, m);
+  R.setFromTriplets(entries.begin(), entries.end()); // repeated entries add up
   Eigen::VectorXd scales(m);
   for(Eigen::Index j = 0; j < m; ++j)
   {
-    for(const auto& e : rows[j].row.entries) R(e.first, j) += e.second;
-    scales[j] = internal::value_scale(R.col(j));
-    R.col(j) /= scales[j];
+    Eigen::Map<Eigen::VectorXd> values(R.valuePtr() + R.outerIndexPtr()[j],
+                                       R.outerIndexPtr()[j + 1] - R.outerIndexPtr()[j]);
+    scales[j] = internal::value_scale(values);
+    values /= scales[j];
   }
   Eigen::MatrixXd H;
   const Eigen::MatrixXd Y = pull_back_.apply(R, H, residual_);

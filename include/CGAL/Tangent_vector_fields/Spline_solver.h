@@ -242,6 +242,8 @@ private:
   void set_scales();
   void solve() const;
   void make_report() const;
+  // sum_i y_i weights(i, k) for each column k of `weights` (one row per constraint row).
+  Eigen::MatrixXd combined_pull_backs(const Eigen::MatrixXd& weights) const;
 
   std::map<Constraint_id, Entry> entries_;
   std::vector<Row> rows_;

@@ -12,9 +12,11 @@
 #include <CGAL/Tangent_vector_fields/Sparse_spd_solver.h>
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 
 #include <atomic>
 #include <memory>
+#include <mutex>
 
 namespace CGAL {
 namespace Tangent_vector_fields {
@@ -48,11 +50,11 @@ public:
 
   /// Factors what the pull-backs need (done by the first `apply` otherwise); returns seconds.
   double factor() const;
-  /// `Y` (`2nf x m`) for the rows `R` (`2nf x m`, frame coordinates); `harmonic` receives
+  /// `Y` (`2nf x m`) for the rows `R` (`2nf x m`, frame coordinates, sparse); `harmonic` receives
   /// their harmonic parts `U_h^T R u` (`nh x m`, orthonormal for MX / u^2).  The first call
   /// raises `residual` to the largest relative residual of its second-order solves (the
   /// solver precision; later calls share the factorisations and leave it).
-  Eigen::MatrixXd apply(const Eigen::MatrixXd& R, Eigen::MatrixXd& harmonic, double& residual) const;
+  Eigen::MatrixXd apply(const Eigen::SparseMatrix<double>& R, Eigen::MatrixXd& harmonic, double& residual) const;
   /// `Q X` in the length unit (S MX^-1 S formed as products only).
   Eigen::MatrixXd apply_energy(const Eigen::MatrixXd& X) const;
   /// Fields of harmonic coefficients `z` (in the orthonormal basis of `apply`).
@@ -62,6 +64,8 @@ public:
 
 private:
   struct Screened;
+  struct Transposes;
+  const Transposes& transposes() const;
   // The chain of one part: `solve` is W or W*, masses M or M*.
   template <class Solve, class Screened_solve>
   Eigen::MatrixXd chain(const Eigen::MatrixXd& rhs, const Eigen::SparseMatrix<double>& laplacian,
@@ -72,6 +76,8 @@ private:
   Design_energy energy_;
   double omega_, u_;
   mutable std::unique_ptr<Screened> screened_;
+  mutable std::once_flag transposes_made_;
+  mutable std::unique_ptr<Transposes> transposes_;
   mutable bool factored_ = false;
   mutable std::atomic<bool> residual_measured_{false};
 };

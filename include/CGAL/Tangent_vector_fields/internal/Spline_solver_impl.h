@@ -14,6 +14,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <thread>
 
 namespace CGAL {
 namespace Tangent_vector_fields {
@@ -350,16 +351,26 @@ Eigen::MatrixXd Basic_spline_solver<Constraint, Operators>::value_response(Const
   // The solution is x0 + sum_i mu_i y_i + harmonic(z) with (mu, z) linear in the
   // right-hand side c - C x0: a unit change of row value k is the solve for e_k.
   const int n = number_of_rows();
-  Eigen::MatrixXd response = Eigen::MatrixXd::Zero(space_dimension(), it->second.row_count);
-  for(int k = 0; k < it->second.row_count; ++k)
+  const int count = it->second.row_count;
+  Eigen::MatrixXd mus(n, count);
+  std::vector<Eigen::VectorXd> zs(count);
+  for(int k = 0; k < count; ++k)
   {
-    Eigen::VectorXd c = Eigen::VectorXd::Zero(n), mu, z;
+    Eigen::VectorXd c = Eigen::VectorXd::Zero(n), mu;
     c[it->second.first_row + k] = 1;
-    system_->solve(c, mu, z);
-    Eigen::VectorXd x = Eigen::VectorXd::Zero(space_dimension());
-    for(int i = 0; i < n; ++i) x += mu[i] * rows_[i].y;
-    if(z.size() > 0) add_harmonic(z, x);
-    response.col(k) = x / rows_[it->second.first_row + k].scale; // per unit of the value as given
+    system_->solve(c, mu, zs[k]);
+    mus.col(k) = mu;
+  }
+  Eigen::MatrixXd response = combined_pull_backs(mus);
+  for(int k = 0; k < count; ++k)
+  {
+    if(zs[k].size() > 0)
+    {
+      Eigen::VectorXd x = response.col(k);
+      add_harmonic(zs[k], x);
+      response.col(k) = x;
+    }
+    response.col(k) /= rows_[it->second.first_row + k].scale; // per unit of the value as given
   }
   return response;
 }
@@ -403,8 +414,7 @@ void Basic_spline_solver<Constraint, Operators>::solve() const
   const double scale = largest > 0 && std::isfinite(largest) ? std::ldexp(1., std::ilogb(largest) + 1) : 1.;
   Eigen::VectorXd mu, z;
   system_->solve(c / scale, mu, z);
-  Eigen::VectorXd x = Eigen::VectorXd::Zero(space_dimension());
-  for(int i = 0; i < n; ++i) x += mu[i] * rows_[i].y;
+  Eigen::VectorXd x = combined_pull_backs(mu);
   if(z.size() > 0) add_harmonic(z, x);
   solution_ = x * scale;
   if(x0.size() > 0) solution_ += x0;
@@ -416,6 +426,37 @@ void Basic_spline_solver<Constraint, Operators>::solve() const
   }
   solved_ = true;
   reported_ = false;
+}
+
+// Blocked so that each pull-back is read once while a block of the result stays in cache:
+// at 346k faces 62 pull-backs are 340 MB, and `x += mu_i y_i` row by row also read and wrote
+// the 5.5 MB result 62 times.  Large sums are split over two threads.
+template <class Constraint, class Operators>
+Eigen::MatrixXd Basic_spline_solver<Constraint, Operators>::combined_pull_backs(const Eigen::MatrixXd& weights) const
+{
+  const Eigen::Index size = space_dimension(), n = weights.rows(), k = weights.cols();
+  Eigen::MatrixXd x(size, k);
+  auto combine = [&](Eigen::Index begin, Eigen::Index end) {
+    const Eigen::Index block = 1024;
+    for(Eigen::Index b = begin; b < end; b += block)
+    {
+      const Eigen::Index length = std::min(block, end - b);
+      x.middleRows(b, length).setZero();
+      for(Eigen::Index i = 0; i < n; ++i)
+        for(Eigen::Index c = 0; c < k; ++c)
+          if(weights(i, c) != 0) x.col(c).segment(b, length) += weights(i, c) * rows_[i].y.segment(b, length);
+    }
+  };
+  if(size * n * k >= (Eigen::Index(1) << 22) && std::thread::hardware_concurrency() > 1)
+  {
+    const Eigen::Index half = size / 2;
+    std::thread second(combine, half, size);
+    combine(0, half);
+    second.join();
+  }
+  else
+    combine(0, size);
+  return x;
 }
 
 // The report costs as much as the solve (a pass over every row, the energy): it is
