@@ -18,6 +18,7 @@
 // Usage: bench_design [data-dir] [--meshes rocker,bunny,armadillo] [--sizes 50,100,...]
 //                     [--cache DIR] (saves / loads bases there)
 //                     [--chart FILE.svg] (error against time per edit, one curve per mesh and constraint set)
+//                     [--default-allocator] (without keep_freed_memory(), which the tvf tool calls)
 //        bench_design [data-dir] --write-meshes DIR [--meshes ...]: writes the benchmark meshes (DIR/<mesh>.off,
 //                     as subdivided here) and their 30 table constraints (DIR/<mesh>-constraints.json) for
 //                     `tvf serve` and bench/bench_editor.mjs, then stops.
@@ -31,6 +32,7 @@
 #include <CGAL/Tangent_vector_fields/Refining_spline_solver.h>
 #include <CGAL/Tangent_vector_fields/Soft_field_design.h>
 #include <CGAL/Tangent_vector_fields/constraint_file_io.h>
+#include <CGAL/Tangent_vector_fields/keep_freed_memory.h>
 #include <CGAL/Tangent_vector_fields/svg_chart.h>
 
 #include <algorithm>
@@ -186,6 +188,7 @@ int main(int argc, char** argv)
   chart.x_label = "constraint add + solve [s]";
   chart.y_label = "relative L2(MX) error vs full";
   std::vector<int> sizes = {50, 100, 200, 500, 1000, 2000};
+  bool default_allocator = false;
   for(int i = 1; i < argc; ++i)
   {
     if(!std::strcmp(argv[i], "--meshes") && i + 1 < argc) which = argv[++i];
@@ -193,8 +196,11 @@ int main(int argc, char** argv)
     else if(!std::strcmp(argv[i], "--cache") && i + 1 < argc) cache = argv[++i];
     else if(!std::strcmp(argv[i], "--chart") && i + 1 < argc) chart_file = argv[++i];
     else if(!std::strcmp(argv[i], "--write-meshes") && i + 1 < argc) write_dir = argv[++i];
+    else if(!std::strcmp(argv[i], "--default-allocator")) default_allocator = true;
     else dir = argv[i];
   }
+  // As the tvf tool does (keep_freed_memory.h); --default-allocator measures without it.
+  if(!default_allocator) TVF::keep_freed_memory();
   const int largest = *std::max_element(sizes.begin(), sizes.end());
   const std::vector<Source> sources = {
       {"rocker", "rocker-arm.obj", 0}, {"bunny", "stanford-bunny.obj", 0}, {"armadillo", "armadillo.obj", 1}};
@@ -461,6 +467,24 @@ int main(int argc, char** argv)
         all_exact = all_exact && refining.is_exact();
         refining.remove(id);
       }
+      // As tvf serve does it: the worker thread pulls each new constraint back while this
+      // thread makes the reduced field; the exact field is made once the worker is done.
+      std::vector<double> background_reduced, background_exact;
+      refining.refine_in_background();
+      for(int i = 0; i < 5; ++i)
+      {
+        const int f = (faces / 3 + 7919 * i) % faces;
+        const auto c = TVF::Field_constraint::vector_in_face(f, ops.mesh().from_frame(f, 0.6, -0.8));
+        start = Clock::now();
+        const TVF::Constraint_id id = refining.add(c);
+        refining.field();
+        background_reduced.push_back(seconds_since(start));
+        all_exact = refining.wait_until_exact(std::chrono::minutes(10)) && all_exact;
+        refining.field();
+        background_exact.push_back(seconds_since(start));
+        refining.remove(id);
+      }
+      refining.stop_background();
       auto median = [](std::vector<double> v) {
         std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
         return v[v.size() / 2];
@@ -471,6 +495,9 @@ int main(int argc, char** argv)
                   " (field_after_value_edit)%s\n",
                   dt, 1e3 * median(reduced_ready), 1e3 * median(exact_ready), exact_error, 1e3 * median(edit_exact),
                   1e3 * median(drag_exact), all_exact ? "" : "  [NOT EXACT after the edits]");
+      std::printf("  the same with the pull-back on a worker thread (as tvf serve): reduced field ready %.2f ms | exact"
+                  " field ready %.1f ms\n",
+                  1e3 * median(background_reduced), 1e3 * median(background_exact));
       random_series.x.push_back(median(exact_ready)); // the curve's exact endpoint
       random_series.y.push_back(exact_error);
     }

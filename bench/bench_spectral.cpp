@@ -11,6 +11,7 @@
 // Usage: bench_spectral [data-dir] [--meshes rocker,bunny,armadillo] [--exact N] [--coexact N]
 //                       [--no-sweep] [--no-compression] [--compression-size D]
 //                       [--threads T]  (eigensolver threads; 0: one per core)
+//                       [--default-allocator]  (without keep_freed_memory(), which the tvf tool calls)
 //        bench_spectral --against-slepc [data-dir] [--meshes ...] [--exact N] [--coexact N]
 //                       [--ranks R] [--mpirun CMD] [--slepc-options "..."]
 // --against-slepc: the package's eigensolver next to SLEPc on the same matrices
@@ -21,6 +22,7 @@
 #include "slepc_side_by_side.h"
 #endif
 
+#include <CGAL/Tangent_vector_fields/keep_freed_memory.h>
 #include <CGAL/Tangent_vector_fields/Eigenfield_basis.h>
 
 #include <chrono>
@@ -148,7 +150,7 @@ int main(int argc, char** argv)
   std::string dir = TVF_SHARED_DATA_DIR;
   std::string which = "rocker,bunny,armadillo";
   int exact = 500, coexact = 500, compression_size = 2000, threads = 0;
-  bool sweep = true, compression = true;
+  bool sweep = true, compression = true, default_allocator = false;
   for(int i = 1; i < argc; ++i)
   {
     if(!std::strcmp(argv[i], "--meshes") && i + 1 < argc) which = argv[++i];
@@ -157,6 +159,7 @@ int main(int argc, char** argv)
     else if(!std::strcmp(argv[i], "--compression-size") && i + 1 < argc) compression_size = std::atoi(argv[++i]);
     else if(!std::strcmp(argv[i], "--threads") && i + 1 < argc) threads = std::atoi(argv[++i]);
     else if(!std::strcmp(argv[i], "--no-sweep")) sweep = false;
+    else if(!std::strcmp(argv[i], "--default-allocator")) default_allocator = true;
     else if(!std::strcmp(argv[i], "--no-compression")) compression = false;
     else if(!std::strcmp(argv[i], "--against-slepc")) against_slepc = true;
     else if(!std::strcmp(argv[i], "--ranks") && i + 1 < argc) ranks = std::atoi(argv[++i]);
@@ -164,6 +167,8 @@ int main(int argc, char** argv)
     else if(!std::strcmp(argv[i], "--slepc-options") && i + 1 < argc) slepc_options = argv[++i];
     else dir = argv[i];
   }
+  // As the tvf tool does (keep_freed_memory.h).
+  if(!default_allocator) CGAL::Tangent_vector_fields::keep_freed_memory();
   const std::vector<Source> sources = {{"rocker", "rocker-arm.obj", 0, 43, 4},
                                        {"bunny", "stanford-bunny.obj", 0, 184, 18},
                                        {"armadillo", "armadillo.obj", 1, 1246, 120}};

@@ -9,6 +9,7 @@
 #include "tool.h"
 
 #include <CGAL/Tangent_vector_fields/errors.h>
+#include <CGAL/Tangent_vector_fields/keep_freed_memory.h>
 
 #include <cstdio>
 #include <iostream>
@@ -79,6 +80,8 @@ int fail(int code, const std::string& reason)
 
 int main(int argc, char** argv)
 {
+  // Interactive commands (serve, design) allocate and free blocks of a few MB per edit.
+  CGAL::Tangent_vector_fields::keep_freed_memory();
   std::vector<std::string> args(argv + 1, argv + argc);
   if(args.empty()) return fail(2, "no command given (run 'tvf --help' for the list of commands)");
   std::string name = args.front();
