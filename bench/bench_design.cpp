@@ -468,20 +468,31 @@ int main(int argc, char** argv)
         refining.remove(id);
       }
       // As tvf serve does it: the worker thread pulls each new constraint back while this
-      // thread makes the reduced field; the exact field is made once the worker is done.
-      std::vector<double> background_reduced, background_exact;
+      // thread makes the first answer (soonest_field: the exact one if the worker is expected
+      // to be quicker than the reduced field, else the reduced one); then the exact field.
+      std::vector<double> background_first, background_exact;
+      int exact_first = 0;
       refining.refine_in_background();
-      for(int i = 0; i < 5; ++i)
+      for(int i = 0; i < 6; ++i)
       {
         const int f = (faces / 3 + 7919 * i) % faces;
         const auto c = TVF::Field_constraint::vector_in_face(f, ops.mesh().from_frame(f, 0.6, -0.8));
         start = Clock::now();
         const TVF::Constraint_id id = refining.add(c);
-        refining.field();
-        background_reduced.push_back(seconds_since(start));
-        all_exact = refining.wait_until_exact(std::chrono::minutes(10)) && all_exact;
-        refining.field();
-        background_exact.push_back(seconds_since(start));
+        TVF::Spline_answer first;
+        refining.soonest_field(&first);
+        const double first_seconds = seconds_since(start);
+        if(!first.exact)
+        {
+          all_exact = refining.wait_until_exact(std::chrono::minutes(10)) && all_exact;
+          refining.field();
+        }
+        if(i > 0) // the first add measures the times soonest_field decides by
+        {
+          background_first.push_back(first_seconds);
+          background_exact.push_back(seconds_since(start));
+          exact_first += first.exact;
+        }
         refining.remove(id);
       }
       refining.stop_background();
@@ -495,9 +506,9 @@ int main(int argc, char** argv)
                   " (field_after_value_edit)%s\n",
                   dt, 1e3 * median(reduced_ready), 1e3 * median(exact_ready), exact_error, 1e3 * median(edit_exact),
                   1e3 * median(drag_exact), all_exact ? "" : "  [NOT EXACT after the edits]");
-      std::printf("  the same with the pull-back on a worker thread (as tvf serve): reduced field ready %.2f ms | exact"
-                  " field ready %.1f ms\n",
-                  1e3 * median(background_reduced), 1e3 * median(background_exact));
+      std::printf("  the same with the pull-back on a worker thread (as tvf serve): first answer ready %.2f ms (exact in %d"
+                  " of 5) | exact field ready %.1f ms\n",
+                  1e3 * median(background_first), exact_first, 1e3 * median(background_exact));
       random_series.x.push_back(median(exact_ready)); // the curve's exact endpoint
       random_series.y.push_back(exact_error);
     }

@@ -201,6 +201,7 @@ void Basic_refining_spline_solver<Reduced, Full>::integrate()
       std::lock_guard<std::mutex> lock(mutex_);
       if(generation_[f.id] != f.generation) continue; // moved meanwhile: stale
     }
+    pull_back_seconds_ = f.seconds;
     try
     {
       // With the values of now: value edits made while it was pulled back.
@@ -303,7 +304,9 @@ void Basic_refining_spline_solver<Reduced, Full>::worker_loop(Full* full, double
     bool ok = true;
     try
     {
+      const auto start = std::chrono::steady_clock::now();
       finished.prepared = full->prepare({constraint});
+      finished.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
     catch(...)
     {
@@ -397,7 +400,24 @@ Eigen::VectorXd Basic_refining_spline_solver<Reduced, Full>::field(Spline_answer
 {
   const Spline_answer a = answer();
   if(which) *which = a;
-  return a.exact && full_ ? full_->field() : reduced_->field();
+  if(a.exact && full_) return full_->field();
+  const auto start = std::chrono::steady_clock::now();
+  Eigen::VectorXd x = reduced_->field();
+  reduced_field_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return x;
+}
+
+template <class Reduced, class Full>
+Eigen::VectorXd Basic_refining_spline_solver<Reduced, Full>::soonest_field(Spline_answer* which)
+{
+  const Spline_answer a = answer();
+  if(!a.exact && a.pending > 0 && worker_.joinable() && pull_back_seconds_ > 0 && reduced_field_seconds_ > 0)
+  {
+    const double expected = a.pending * pull_back_seconds_;
+    if(expected < reduced_field_seconds_)
+      wait_until_exact(std::chrono::milliseconds(2 + static_cast<long>(1.5e3 * expected)));
+  }
+  return field(which);
 }
 
 template <class Reduced, class Full>

@@ -173,13 +173,16 @@ public:
     TVF::Spline_answer answer;
     start = Clock::now();
     const TVF::Constraint_id edited = edited_ >= 0 ? entries_.at(edited_).spline : -1;
-    out.x = edited >= 0 ? spline_->field_after_value_edit(edited, &answer) : spline_->field(&answer);
+    // After an add or a move: the exact field at once where the worker has it sooner than the
+    // reduced one would take.
+    out.x = edited >= 0 ? spline_->field_after_value_edit(edited, &answer) : spline_->soonest_field(&answer);
     (answer.exact ? out.full_ms : out.reconstruct_ms) = milliseconds_since(start);
     if(answer.exact != exact_before) out.report = spline_->report();
     out.exact = answer.exact;
     out.pending = answer.pending;
     // The two answers of one constraint set, once both are known: the reduced one is sent
-    // first after an edit; after a value edit in exact mode it is cheap (its own cached response).
+    // first after an edit (unless the exact one comes sooner); after a value edit in exact mode
+    // it is cheap (its own cached response).
     if(!answer.exact)
     {
       reduced_ = out.x;

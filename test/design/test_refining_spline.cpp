@@ -254,3 +254,34 @@ TEST(RefiningSpline, FullSolverMadeOnTheWorkerAndDroppedWhenNotNeeded)
   EXPECT_NE(failing.refinement_error().find("no factorisation today"), std::string::npos) << failing.refinement_error();
   EXPECT_FALSE(failing.answer().exact);
 }
+
+TEST(RefiningSpline, SoonestFieldIsTheAnswerItSays)
+{
+  // `soonest_field` may wait for the worker (when a pull-back is expected sooner than the
+  // reduced field); whatever it answers must be the field of the answer it reports, equal to
+  // the one-shot solve of that kind, and without a worker it never waits: reduced at once.
+  const Mesh mesh = make_torus(16, 10);
+  Design_setup s = setup(mesh, 150);
+  const TVF::Intrinsic_mesh& m = s.ops->mesh();
+  const int d = 150, nf = m.number_of_faces();
+  auto spline = refining(s, d);
+  std::map<TVF::Constraint_id, TVF::Field_constraint> set;
+  auto add_and_check = [&](int i, bool worker) {
+    const int f = (i * 389 + 11) % nf;
+    const TVF::Field_constraint c = TVF::Field_constraint::vector_in_face(f, tangent(m, f, 0.3 * i, 1));
+    set[spline->add(c)] = c;
+    TVF::Spline_answer a;
+    const Eigen::VectorXd x = spline->soonest_field(&a);
+    if(!worker) EXPECT_FALSE(a.exact) << "add " << i;
+    EXPECT_EQ(a.exact, a.pending == 0) << "add " << i;
+    const Fresh truth = fresh_solves(s, d, set);
+    EXPECT_LT(relative_mx_error(*s.ops, x, a.exact ? truth.full : truth.reduced), a.exact ? 1e-9 : 1e-10)
+        << "add " << i << (a.exact ? " (exact)" : " (reduced)");
+  };
+  for(int i = 0; i < 3; ++i) add_and_check(i, false);
+  spline->refine_in_background();
+  ASSERT_TRUE(spline->wait_until_exact(std::chrono::minutes(2)));
+  for(int i = 3; i < 9; ++i) add_and_check(i, true);
+  ASSERT_TRUE(spline->wait_until_exact(std::chrono::minutes(2)));
+  EXPECT_LT(relative_mx_error(*s.ops, spline->soonest_field(), fresh_solves(s, d, set).full), 1e-9);
+}

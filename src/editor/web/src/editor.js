@@ -114,6 +114,12 @@ export class Editor {
     if (entry) {
       this.latency.add(latencyEntry(entry.message, header, buffer.byteLength,
         { sentAt: entry.sentAt, arrivedAt, updatedAt, drawnAt }));
+      // An edit answered exactly at once (the worker was quicker than the reduced field):
+      // its exact field is this frame.
+      if (header.answer?.exact && header.answer?.pending === 0) {
+        this.latency.exact(header.request, { exact_ms: drawnAt - entry.sentAt, exact_server_ms: header.timings?.server_ms,
+          exact_transfer_ms: arrivedAt - entry.sentAt - (header.timings?.server_ms ?? 0) });
+      }
     }
     this.ui.field(header);
     this.queue.onFieldDrawn(entry, header);
