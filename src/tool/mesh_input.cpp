@@ -18,9 +18,11 @@
 #include <array>
 #include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <locale>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -128,6 +130,114 @@ std::string ply_header_defect(const std::string& path)
       return "element '" + name.substr(0, 40) + "' has the count '" + count.substr(0, 40) +
              "', not a whole number up to the file's size";
   }
+  return "";
+}
+
+// Bytes of a PLY scalar type, 0 for a name that is not one.
+int ply_type_size(const std::string& type)
+{
+  static const std::map<std::string, int> sizes = {
+      {"char", 1},  {"uchar", 1},  {"int8", 1},  {"uint8", 1},  {"short", 2},   {"ushort", 2},  {"int16", 2},
+      {"uint16", 2}, {"int", 4},   {"uint", 4},  {"int32", 4},  {"uint32", 4},  {"float", 4},   {"float32", 4},
+      {"double", 8}, {"float64", 8}};
+  const auto it = sizes.find(type);
+  return it == sizes.end() ? 0 : it->second;
+}
+
+// CGAL 5.5's PLY reader sizes a list by the count the file gives, unchecked (a count of 482
+// million in a 231-byte file: 1.9 GB; found by test/fuzz's mesh target).  Walks the body as
+// the header declares it and refuses unknown property types and list counts larger than the
+// rest of the file could hold.  A body that ends early is left to CGAL.
+std::string ply_body_defect(const std::string& path)
+{
+  auto printable = [](std::string text) { // file bytes in a message
+    text = text.substr(0, 40);
+    for(char& c : text)
+      if(c < 32 || c > 126) c = '?';
+    return text;
+  };
+  struct Property
+  {
+    int count_size = 0; // > 0: a list with a count of this many bytes
+    bool count_signed = false;
+    int size = 0; // of the scalar, or of each list entry
+  };
+  std::vector<std::pair<long long, std::vector<Property>>> elements;
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  const std::streamoff bytes = in.tellg();
+  in.seekg(0);
+  std::string line, format;
+  for(int n = 0; n < 100000 && std::getline(in, line); ++n)
+  {
+    std::istringstream words(line);
+    std::string keyword;
+    words >> keyword;
+    if(keyword == "format") words >> format;
+    else if(keyword == "element")
+    {
+      std::string name;
+      long long count = 0;
+      words >> name >> count; // checked by ply_header_defect
+      elements.push_back({count, {}});
+    }
+    else if(keyword == "property" && !elements.empty())
+    {
+      std::vector<std::string> w;
+      for(std::string t; words >> t;) w.push_back(t);
+      Property p;
+      const std::string type = w.empty() ? "" : w[0];
+      if(type == "list")
+      {
+        if(w.size() < 4 || !ply_type_size(w[1]) || !ply_type_size(w[2]))
+          return "a list property with types that are not PLY types: '" + printable(line) + "'";
+        p.count_size = ply_type_size(w[1]);
+        p.count_signed = w[1][0] != 'u';
+        p.size = ply_type_size(w[2]);
+      }
+      else if(!(p.size = ply_type_size(type)))
+        return "the property type '" + printable(type) + "' is not a PLY type";
+      elements.back().second.push_back(p);
+    }
+    else if(keyword == "end_header")
+      break;
+  }
+  const bool ascii = format == "ascii", little = format == "binary_little_endian";
+  auto remaining = [&] { return static_cast<long long>(bytes - in.tellg()); };
+  auto too_many = [&](long long count, long long entry_bytes) {
+    return count < 0 || count > remaining() / entry_bytes;
+  };
+  for(const auto& [count, properties] : elements)
+    for(long long item = 0; item < count; ++item)
+      for(const Property& p : properties)
+      {
+        if(ascii)
+        {
+          std::string token;
+          if(!(in >> token)) return "";
+          if(!p.count_size) continue;
+          char* end = nullptr;
+          const long long n = std::strtoll(token.c_str(), &end, 10);
+          if(*end != 0 || too_many(n, 2))
+            return "a list of '" + printable(token) + "' entries, more than the rest of the file holds";
+          for(long long k = 0; k < n; ++k)
+            if(!(in >> token)) return "";
+          continue;
+        }
+        if(!p.count_size)
+        {
+          in.seekg(p.size, std::ios::cur);
+          if(!in || remaining() < 0) return "";
+          continue;
+        }
+        unsigned char raw[4] = {0, 0, 0, 0};
+        if(!in.read(reinterpret_cast<char*>(raw), p.count_size)) return "";
+        unsigned long long u = 0;
+        for(int k = 0; k < p.count_size; ++k) u |= static_cast<unsigned long long>(raw[little ? k : p.count_size - 1 - k]) << (8 * k);
+        long long n = static_cast<long long>(u);
+        if(p.count_signed && (u >> (8 * p.count_size - 1)) & 1) n -= 1LL << (8 * p.count_size);
+        if(too_many(n, p.size)) return "a list of " + std::to_string(n) + " entries, more than the rest of the file holds";
+        in.seekg(n * p.size, std::ios::cur);
+      }
   return "";
 }
 
@@ -274,8 +384,11 @@ Mesh_file read_mesh_file(const std::string& path)
   }
   if(ext == "ply")
   {
-    const std::string defect = ply_header_defect(path);
+    std::string defect = ply_header_defect(path);
     if(!defect.empty()) throw Tool_error("cannot read a polygon mesh from '" + path + "' (malformed PLY header: " + defect + ")");
+    defect = ply_body_defect(path);
+    if(!defect.empty())
+      throw Tool_error("cannot read a polygon mesh from '" + path + "' (malformed PLY: " + defect + ")");
   }
   Mesh_file file;
   bool ok = false;

@@ -224,6 +224,30 @@ TEST(MeshInput, PlyPropertyBeforeAnyElementIsRefused)
                                   "' (malformed PLY header: element 'vertex' has no property 'x')");
 }
 
+// fuzz_mesh: CGAL's PLY reader sized a list by the count the file gives (482 million in a
+// 231-byte file: 1.9 GB); the body is walked first, in ASCII and in binary, and so are types.
+TEST(MeshInput, PlyListCountBeyondTheFileIsRefused)
+{
+  const std::string header = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                             "property float z\nelement face 1\nproperty list int int vertex_indices\nend_header\n";
+  const std::string huge = file_with("huge_list.ply", header + "0 0 0\n1 0 0\n0 1 0\n400000000 0 1 2\n");
+  EXPECT_EQ(mesh_error(huge), "cannot read a polygon mesh from '" + huge + "' (malformed PLY: a list of '400000000' "
+                              "entries, more than the rest of the file holds)");
+  std::string binary = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                       "property float z\nelement face 1\nproperty list uint int vertex_indices\nend_header\n";
+  const float corners[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  binary.append(reinterpret_cast<const char*>(corners), sizeof corners);
+  const std::string ok_binary = file_with("triangle.ply", binary + std::string("\x03\0\0\0\0\0\0\0\x01\0\0\0\x02\0\0\0", 16));
+  EXPECT_EQ(read_mesh_file(ok_binary).polygons.size(), 1u); // a well-formed file still reads (little-endian host)
+  const std::string huge_binary = file_with("huge_binary_list.ply", binary + std::string("\0\0\0\xb0\0\0\0\0", 8));
+  EXPECT_EQ(mesh_error(huge_binary), "cannot read a polygon mesh from '" + huge_binary + "' (malformed PLY: a list of "
+                                     "2952790016 entries, more than the rest of the file holds)");
+  const std::string bad_type = file_with("bad_type.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty dbl x\n"
+                                                         "property float y\nproperty float z\nend_header\n0 0 0\n");
+  EXPECT_EQ(mesh_error(bad_type), "cannot read a polygon mesh from '" + bad_type + "' (malformed PLY: the property "
+                                  "type 'dbl' is not a PLY type)");
+}
+
 // fuzz_mesh: CGAL's PLY reader took an element count of "-1.01" as 2^64 - 1 and looped over
 // the items (a hang); counts must be whole numbers up to the file's size.
 TEST(MeshInput, PlyElementCountThatIsNotAWholeNumberIsRefused)
