@@ -246,6 +246,10 @@ TEST(MeshInput, PlyListCountBeyondTheFileIsRefused)
                                                          "property float y\nproperty float z\nend_header\n0 0 0\n");
   EXPECT_EQ(mesh_error(bad_type), "cannot read a polygon mesh from '" + bad_type + "' (malformed PLY: the property "
                                   "type 'dbl' is not a PLY type)");
+  // Without an end_header line CGAL still read a body, and a list count of 1.4 billion in it.
+  const std::string no_end = file_with("no_end_header.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
+                                                            "property float y\nproperty float z\n0 0 0\n");
+  EXPECT_EQ(mesh_error(no_end), "cannot read a polygon mesh from '" + no_end + "' (malformed PLY header: no end_header line)");
 }
 
 // fuzz_mesh: CGAL's PLY reader took an element count of "-1.01" as 2^64 - 1 and looped over
