@@ -178,11 +178,7 @@ Eigen::MatrixXd Hodge_pull_back::apply(const Eigen::SparseMatrix<double>& R, Eig
     const Eigen::MatrixXd p_star =
         chain(GstR, ops.W_star(), M_star, edge_solve, edge_screened, measure ? &coexact_residual : nullptr);
     Eigen::MatrixXd Gp = (ops.G_star_interior() * p_star) * u;
-    for(Eigen::Index f = 0; 2 * f < Gp.rows(); ++f)
-    {
-      Gp.row(2 * f).swap(Gp.row(2 * f + 1));
-      Gp.row(2 * f) *= -1;
-    }
+    for(Eigen::Index j = 0; j < Gp.cols(); ++j) Gp.col(j) = ops.rotate(Eigen::VectorXd(Gp.col(j)));
     return Gp;
   };
   // The two chains share nothing (each its own factorisations and lock): on a large mesh the
