@@ -300,12 +300,20 @@ std::string off_structure_defect(const std::string& path)
   const std::size_t homogeneous = header.is_homogeneous() ? 1 : 0;
   const std::size_t vertex_numbers = (3 + homogeneous) * (header.has_normals() ? 2 : 1) +
                                      (header.has_textures() ? 2 + homogeneous : 0);
-  const auto line_defect = [&](const std::string& what, long long k, std::size_t numbers, std::size_t needed) {
+  // Once a vertex (or a facet) has a colour, CGAL reads one for every later vertex (facet): from
+  // past the end of a line that has none.
+  bool vertex_coloured = false, facet_coloured = false;
+  const auto line_defect = [&](const std::string& what, long long k, std::size_t numbers, std::size_t needed,
+                               bool& coloured) {
     if(numbers < needed)
       return what + " " + std::to_string(k) + " starts with " + std::to_string(numbers) + " numbers where " +
              std::to_string(needed) + " are needed ('" + line.substr(0, 40) + "')";
     const std::size_t extra = numbers - needed;
-    if(!colours || extra == 0 || extra == 1 || extra == 3 || extra == 4) return std::string();
+    if(!colours) return std::string();
+    if(extra == 0 && coloured)
+      return what + " " + std::to_string(k) + " has no colour, but an earlier " + what + " has one";
+    coloured = coloured || extra > 0;
+    if(extra == 0 || extra == 1 || extra == 3 || extra == 4) return std::string();
     return what + " " + std::to_string(k) + " has " + std::to_string(extra) +
            " numbers after its data; a colour has 1, 3 or 4";
   };
@@ -314,7 +322,7 @@ std::string off_structure_defect(const std::string& path)
     // One vertex a line, as CGAL reads them; CGAL reads the colour of a missing line too.
     if(!next_line())
       return "the file ends after " + std::to_string(v) + " of its " + std::to_string(vertices) + " vertices";
-    const std::string defect = line_defect("vertex", v, off_numbers(line).size(), vertex_numbers);
+    const std::string defect = line_defect("vertex", v, off_numbers(line).size(), vertex_numbers, vertex_coloured);
     if(!defect.empty()) return defect;
   }
   for(long long f = 0; f < facets; ++f)
@@ -327,7 +335,8 @@ std::string off_structure_defect(const std::string& path)
     if(!(count >= 0 && count == std::floor(count) && count <= double(numbers.size() - 1)))
       return "facet " + std::to_string(f) + " announces " + std::to_string(count) + " vertices but its line holds " +
              std::to_string(numbers.size() - 1) + " numbers after the count";
-    const std::string defect = line_defect("facet", f, numbers.size(), 1 + static_cast<std::size_t>(count));
+    const std::string defect =
+        line_defect("facet", f, numbers.size(), 1 + static_cast<std::size_t>(count), facet_coloured);
     if(!defect.empty()) return defect;
     // CGAL converts each index (read as a double) to std::size_t unchecked: 1e90 is undefined.
     for(std::size_t k = 1; k <= static_cast<std::size_t>(count); ++k)

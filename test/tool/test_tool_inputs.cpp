@@ -190,6 +190,19 @@ TEST(MeshInput, OffFacetCountBeyondItsLineIsRefused)
   const std::string short_file = file_with("ends_early.off", "COFF\n5 3 0\n0 0 1\n2 0 1\n");
   EXPECT_EQ(mesh_error(short_file), "cannot read a polygon mesh from '" + short_file + "' (malformed OFF: the file ends "
                                     "after 2 of its 5 vertices)");
+  // Once a vertex (facet) had a colour, CGAL read one for each later vertex (facet): past the
+  // end of a line without one.
+  const std::string uncoloured = file_with("uncoloured_vertex.off", "COFF\n3 1 0\n0 0 0 9\n1 0 0\n0 1 0 9\n3 0 1 2\n");
+  EXPECT_EQ(mesh_error(uncoloured), "cannot read a polygon mesh from '" + uncoloured + "' (malformed OFF: vertex 1 "
+                                    "has no colour, but an earlier vertex has one)");
+  const std::string facets = file_with("uncoloured_facet.off", "COFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n"
+                                                               "3 0 1 2 1 0 0\n3 1 3 2\n");
+  EXPECT_EQ(mesh_error(facets), "cannot read a polygon mesh from '" + facets + "' (malformed OFF: facet 1 has no "
+                                "colour, but an earlier facet has one)");
+  // Coloured vertices with uncoloured facets, and the reverse, are well formed.
+  const std::string mixed = file_with("mixed_colours.off", "COFF\n3 1 0\n0 0 0 1 0 0\n1 0 0 0 1 0\n0 1 0 0 0 1\n"
+                                                           "3 0 1 2\n");
+  EXPECT_EQ(read_mesh_file(mixed).polygons.size(), 1u);
   // CGAL's scanner takes "OFF'4" for a keyword and its counts: the header is read by that scanner.
   const std::string odd = file_with("odd_keyword.off", "OFF'4 433333333 0 1\n3 0 2 1\n");
   EXPECT_EQ(mesh_error(odd), "cannot read a polygon mesh from '" + odd + "' (malformed OFF: the header announces "
