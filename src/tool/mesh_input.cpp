@@ -83,14 +83,25 @@ std::string ply_header_defect(const std::string& path)
   const std::streamoff bytes = in.tellg();
   in.seekg(0);
   std::string line, element;
-  std::set<std::string> properties; // of the element being declared
+  std::map<std::string, std::string> properties; // name to type ("list" for lists) of the element being declared
   bool element_seen = false, format_seen = false;
-  // CGAL reads a vertex's coordinates from its properties x, y and z without checking that they
-  // exist (a null dereference): a vertex element must declare all three.
+  // CGAL reads a vertex's coordinates from its properties x, y and z as float or double without
+  // checking that they exist or have such a type (a null dereference for each): a vertex element
+  // ("vertex" or "vertices", as CGAL names it) must declare all three as floating-point scalars.
   const auto vertex_defect = [&]() -> std::string {
-    if(element != "vertex") return "";
+    if(element != "vertex" && element != "vertices") return "";
     for(const char* c : {"x", "y", "z"})
-      if(!properties.count(c)) return std::string("element 'vertex' has no property '") + c + "'";
+    {
+      const auto it = properties.find(c);
+      if(it == properties.end()) return "element '" + element + "' has no property '" + c + "'";
+      // Types that are no PLY type at all are refused with the body's walk.
+      static const std::set<std::string> not_floating = {"list", "char",  "uchar",  "int8", "uint8", "short", "ushort",
+                                                         "int16", "uint16", "int", "uint", "int32", "uint32"};
+      const std::string& type = it->second;
+      if(not_floating.count(type))
+        return "the property '" + std::string(c) + "' of element '" + element + "' has the type '" +
+               type.substr(0, 40) + "', not float or double";
+    }
     return "";
   };
   for(int n = 0; n < 100000 && std::getline(in, line); ++n)
@@ -112,9 +123,10 @@ std::string ply_header_defect(const std::string& path)
     if(keyword == "property" && !element_seen) return "a property before any element";
     if(keyword == "property")
     {
-      std::string type, last;
-      while(words >> type) last = type; // the name ends the line ("property list uchar int vertex_indices")
-      properties.insert(last);
+      std::string first, word, last;
+      words >> first;
+      for(last = first; words >> word;) last = word; // the name ends the line ("property list uchar int vertex_indices")
+      properties[last] = first;
     }
     if(keyword != "element") continue;
     const std::string defect = vertex_defect();

@@ -174,6 +174,44 @@ TEST(Repair, PolygonWithTwoCornersAtOnePointIsCutAsAFan)
   EXPECT_EQ(r.mesh.number_of_vertices(), 5u);
 }
 
+TEST(Repair, PolygonWhoseProjectionCrossesItselfIsTriangulatedWithoutCrossings)
+{
+  // A pentagon whose projection onto its plane (along its Newell normal) has crossing sides:
+  // CGAL's constrained triangulation inserted a vertex at the crossing and dereferenced its
+  // missing halfedge (SEGV, found by the mesh fuzzer).  It goes to hole filling instead.
+  Polygon_soup soup;
+  soup.points = {Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(0, 1, 0), Point_3(2, 0, 2), Point_3(0.5, 0.5, 0)};
+  soup.polygons.push_back({0, 1, 2, 3, 4});
+  const Repaired r = repair(soup);
+  EXPECT_EQ(r.report.triangles_from_polygons, 3u);
+  EXPECT_EQ(r.mesh.number_of_faces(), 3u);
+  EXPECT_EQ(r.mesh.number_of_vertices(), 5u);
+}
+
+TEST(Repair, NonConvexPolygonWithCollinearSidesIsTriangulatedInsideItself)
+{
+  // A U, whose two top sides lie on one line without meeting: still a simple polygon, so it
+  // keeps the constrained triangulation.  A fan from its first corner would fold a triangle
+  // over the notch (its areas would sum to more than the U's 5).
+  Polygon_soup soup;
+  soup.points = {Point_3(0, 0, 0), Point_3(3, 0, 0), Point_3(3, 2, 0), Point_3(2, 2, 0),
+                 Point_3(2, 1, 0), Point_3(1, 1, 0), Point_3(1, 2, 0), Point_3(0, 2, 0)};
+  soup.polygons.push_back({0, 1, 2, 3, 4, 5, 6, 7});
+  const Repaired r = repair(soup);
+  ASSERT_EQ(r.mesh.number_of_faces(), 6u);
+  double area = 0;
+  for(const auto f : r.mesh.faces())
+  {
+    const auto h = r.mesh.halfedge(f);
+    const Point_3 &a = r.mesh.point(r.mesh.source(h)), &b = r.mesh.point(r.mesh.target(h)),
+                  &c = r.mesh.point(r.mesh.target(r.mesh.next(h)));
+    const double z = CGAL::cross_product(b - a, c - a).z() / 2;
+    EXPECT_GT(z, 0) << "a triangle folded over";
+    area += std::abs(z);
+  }
+  EXPECT_NEAR(area, 5, 1e-12);
+}
+
 TEST(Repair, ShuffledOrientationsAreMadeConsistent)
 {
   const Mesh sphere = make_icosphere(2);

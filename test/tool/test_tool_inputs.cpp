@@ -235,6 +235,22 @@ TEST(MeshInput, PlyPropertyBeforeAnyElementIsRefused)
                                                              "property double y\nproperty double z\nend_header\n0 0\n");
   EXPECT_EQ(mesh_error(no_x), "cannot read a polygon mesh from '" + no_x +
                                   "' (malformed PLY header: element 'vertex' has no property 'x')");
+  // CGAL read a coordinate of an integer type as a float (a null dereference), also in an
+  // element named "vertices"; a float32 coordinate is read.
+  const std::string integer_y = file_with("integer_y.ply", "ply\nformat ascii 1.0\nelement vertices 1\n"
+                                                           "property double x\nproperty uint16 y\nproperty double z\n"
+                                                           "end_header\n0 0 0\n");
+  EXPECT_EQ(mesh_error(integer_y), "cannot read a polygon mesh from '" + integer_y + "' (malformed PLY header: the "
+                                   "property 'y' of element 'vertices' has the type 'uint16', not float or double)");
+  const std::string list_z = file_with("list_z.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
+                                                     "property float y\nproperty list uchar float z\nend_header\n");
+  EXPECT_EQ(mesh_error(list_z), "cannot read a polygon mesh from '" + list_z + "' (malformed PLY header: the "
+                                "property 'z' of element 'vertex' has the type 'list', not float or double)");
+  const std::string float32 = file_with("float32.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float32 x\n"
+                                                       "property float32 y\nproperty float32 z\nelement face 1\n"
+                                                       "property list uchar int vertex_indices\nend_header\n"
+                                                       "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  EXPECT_EQ(read_mesh_file(float32).polygons.size(), 1u);
 }
 
 // fuzz_mesh: CGAL's PLY reader sized a list by the count the file gives (482 million in a

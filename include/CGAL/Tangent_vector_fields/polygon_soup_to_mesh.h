@@ -15,7 +15,9 @@
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/Projection_traits_3.h>
 #include <CGAL/Surface_mesh/Surface_mesh.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -117,6 +119,44 @@ struct Created_faces_visitor : CGAL::Polygon_mesh_processing::Triangulate_faces:
   void after_subface_created(typename Mesh::Face_index f) { created->push_back(f); }
 };
 
+// Whether two sides of a polygon that are not neighbours meet, or two neighbouring corners
+// coincide, as CGAL's constrained triangulation sees the polygon: projected along `normal`,
+// with that projection's own predicates.  Where sides cross, the triangulation inserts a
+// vertex without the halfedge CGAL's `triangulate_face` then dereferences (a SEGV found by
+// test/fuzz's mesh target).  Quadratic in the corners, checked for 5 and more.
+template <class Point, class Vector>
+bool projected_sides_meet(const std::vector<Point>& p, const Vector& normal)
+{
+  typedef typename CGAL::Kernel_traits<Point>::Kernel Kernel;
+  const CGAL::Projection_traits_3<Kernel> traits(normal);
+  const auto orientation = traits.orientation_2_object();
+  const auto less = traits.less_xy_2_object();
+  const auto compare_x = traits.compare_x_2_object();
+  const auto compare_y = traits.compare_y_2_object();
+  // c, on the line through a and b, lies between them.
+  const auto on_side = [&](const Point& a, const Point& b, const Point& c) {
+    const Point& low = less(a, b) ? a : b;
+    const Point& high = less(a, b) ? b : a;
+    return !less(c, low) && !less(high, c);
+  };
+  const std::size_t k = p.size();
+  for(std::size_t i = 0; i < k; ++i)
+    if(compare_x(p[i], p[(i + 1) % k]) == CGAL::EQUAL && compare_y(p[i], p[(i + 1) % k]) == CGAL::EQUAL) return true;
+  for(std::size_t i = 0; i < k; ++i)
+    for(std::size_t j = i + 2; j < k; ++j)
+    {
+      if(i == 0 && j + 1 == k) continue; // neighbours through the last corner
+      const Point &a = p[i], &b = p[(i + 1) % k], &c = p[j], &d = p[(j + 1) % k];
+      const CGAL::Orientation abc = orientation(a, b, c), abd = orientation(a, b, d), cda = orientation(c, d, a),
+                              cdb = orientation(c, d, b);
+      if(abc != abd && cda != cdb) return true;
+      if((abc == CGAL::COLLINEAR && on_side(a, b, c)) || (abd == CGAL::COLLINEAR && on_side(a, b, d)) ||
+         (cda == CGAL::COLLINEAR && on_side(c, d, a)) || (cdb == CGAL::COLLINEAR && on_side(c, d, b)))
+        return true;
+    }
+  return false;
+}
+
 // Triangulates one polygon of more than three vertices with CGAL's `triangulate_face`
 // (the better diagonal of a quad, a constrained Delaunay triangulation in the
 // polygon's plane otherwise, hole filling where that fails), or as a fan from its first
@@ -149,7 +189,16 @@ void triangulate_polygon(const std::vector<Point>& points, const std::vector<std
   std::vector<typename Scratch::Face_index> created;
   Created_faces_visitor<Scratch> visitor;
   visitor.created = &created;
-  bool done = face != Scratch::null_face() && PMP::triangulate_face(face, scratch, CGAL::parameters::visitor(visitor));
+  // Hole filling instead of the constrained triangulation where the latter would crash.
+  bool use_cdt = true;
+  if(face != Scratch::null_face() && polygon.size() >= 5)
+  {
+    std::vector<Point> corner_points;
+    for(std::size_t v : polygon) corner_points.push_back(points[v]);
+    use_cdt = !projected_sides_meet(corner_points, PMP::compute_face_normal(face, scratch));
+  }
+  bool done = face != Scratch::null_face() && use_cdt &&
+              PMP::triangulate_face(face, scratch, CGAL::parameters::visitor(visitor));
   if(!done && face != Scratch::null_face())
   {
     created.clear();
