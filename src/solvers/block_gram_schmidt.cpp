@@ -81,7 +81,8 @@ project_out(const double* Q, Eigen::Index ldq, Eigen::Index n, Eigen::Index m, d
 
 } // namespace
 
-Eigen::MatrixXd project_out_of_columns(const Eigen::MatrixXd& Q, Eigen::Index first, Eigen::Index count, Eigen::MatrixXd& Z)
+Eigen::MatrixXd project_out_of_columns(const Eigen::Ref<const Eigen::MatrixXd>& Q, Eigen::Index first,
+                                       Eigen::Index count, Eigen::MatrixXd& Z)
 {
   if(Z.cols() != 4)
   {

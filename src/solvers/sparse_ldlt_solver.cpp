@@ -25,6 +25,9 @@ struct Sparse_ldlt_solver::Impl
   cholmod_common common;
   cholmod_factor* factor = nullptr;
   Eigen::VectorXd pivots;
+  // Solution and workspace kept from solve to solve: allocated afresh, each solve's
+  // blocks of a few MB were new pages (a quarter of the eigensolver's page faults).
+  cholmod_dense *x = nullptr, *y = nullptr, *e = nullptr;
   Impl()
   {
     cholmod_start(&common);
@@ -36,6 +39,8 @@ struct Sparse_ldlt_solver::Impl
   }
   ~Impl()
   {
+    for(cholmod_dense** d : {&x, &y, &e})
+      if(*d) cholmod_free_dense(d, &common);
     if(factor) cholmod_free_factor(&factor, &common);
     cholmod_finish(&common);
   }
@@ -44,12 +49,25 @@ struct Sparse_ldlt_solver::Impl
 Sparse_ldlt_solver::Sparse_ldlt_solver() : impl_(new Impl) {}
 Sparse_ldlt_solver::~Sparse_ldlt_solver() = default;
 
-void Sparse_ldlt_solver::analyze(const Eigen::SparseMatrix<double>& A)
+void Sparse_ldlt_solver::analyze(const Eigen::SparseMatrix<double>& A, bool many_factorizations)
 {
   if(impl_->factor) cholmod_free_factor(&impl_->factor, &impl_->common);
   cholmod_sparse view = Eigen::viewAsCholmod(A.selfadjointView<Eigen::Lower>());
+  impl_->common.method[0].ordering = many_factorizations && A.rows() >= 20000 ? CHOLMOD_METIS : CHOLMOD_AMD;
   impl_->factor = cholmod_analyze(&view, &impl_->common);
+  if(!impl_->factor && impl_->common.method[0].ordering == CHOLMOD_METIS) // a CHOLMOD built without METIS
+  {
+    impl_->common.method[0].ordering = CHOLMOD_AMD;
+    impl_->factor = cholmod_analyze(&view, &impl_->common);
+  }
   if(!impl_->factor || impl_->common.status < CHOLMOD_OK) throw Numerical_failure("LDL^T analysis failed (CHOLMOD)");
+}
+
+void Sparse_ldlt_solver::copy_analysis(const Sparse_ldlt_solver& other)
+{
+  if(impl_->factor) cholmod_free_factor(&impl_->factor, &impl_->common);
+  impl_->factor = cholmod_copy_factor(other.impl_->factor, &impl_->common);
+  if(!impl_->factor) throw Numerical_failure("LDL^T analysis could not be copied (CHOLMOD)");
 }
 
 void Sparse_ldlt_solver::factor(const Eigen::SparseMatrix<double>& A, const std::string& what)
@@ -71,13 +89,10 @@ void Sparse_ldlt_solver::factor(const Eigen::SparseMatrix<double>& A, const std:
 
 Eigen::MatrixXd Sparse_ldlt_solver::solve(const Eigen::MatrixXd& B) const
 {
-  Eigen::MatrixXd input = B;
-  cholmod_dense b = Eigen::viewAsCholmod(input);
-  cholmod_dense* x = cholmod_solve(CHOLMOD_A, impl_->factor, &b, &impl_->common);
-  if(!x) throw Numerical_failure("LDL^T solve failed (CHOLMOD)");
-  Eigen::MatrixXd result = Eigen::Map<Eigen::MatrixXd>(static_cast<double*>(x->x), B.rows(), B.cols());
-  cholmod_free_dense(&x, &impl_->common);
-  return result;
+  cholmod_dense b = Eigen::viewAsCholmod(const_cast<Eigen::MatrixXd&>(B)); // read only
+  if(!cholmod_solve2(CHOLMOD_A, impl_->factor, &b, nullptr, &impl_->x, nullptr, &impl_->y, &impl_->e, &impl_->common))
+    throw Numerical_failure("LDL^T solve failed (CHOLMOD)");
+  return Eigen::Map<const Eigen::MatrixXd>(static_cast<const double*>(impl_->x->x), B.rows(), B.cols());
 }
 
 #else
@@ -92,10 +107,16 @@ struct Sparse_ldlt_solver::Impl
 Sparse_ldlt_solver::Sparse_ldlt_solver() : impl_(new Impl) {}
 Sparse_ldlt_solver::~Sparse_ldlt_solver() = default;
 
-void Sparse_ldlt_solver::analyze(const Eigen::SparseMatrix<double>& A)
+void Sparse_ldlt_solver::analyze(const Eigen::SparseMatrix<double>& A, bool)
 {
   impl_->ldlt.analyzePattern(A);
   impl_->analyzed = true;
+}
+
+void Sparse_ldlt_solver::copy_analysis(const Sparse_ldlt_solver& other)
+{
+  impl_->ldlt = other.impl_->ldlt;
+  impl_->analyzed = other.impl_->analyzed;
 }
 
 void Sparse_ldlt_solver::factor(const Eigen::SparseMatrix<double>& A, const std::string& what)

@@ -75,13 +75,16 @@ struct Chain_monitor
 };
 
 // The shifted matrix A - sigma D and its LDL^T, one per chain (a factor is not shared
-// between threads); the fill-reducing analysis is made once.
+// between threads); the fill-reducing analysis is made once, for every chain.
 struct Shifted_factor
 {
   const Standard_eigenproblem& p;
   Sparse_matrix K;
   Sparse_ldlt_solver solver;
-  explicit Shifted_factor(const Standard_eigenproblem& problem) : p(problem) { solver.analyze(p.A); }
+  Shifted_factor(const Standard_eigenproblem& problem, const Sparse_ldlt_solver& analysis) : p(problem)
+  {
+    solver.copy_analysis(analysis);
+  }
   int factor_at(double sigma)
   {
     K = p.A;
@@ -110,8 +113,8 @@ struct Chain
   int applications = 0, basis_used = 0;
 };
 
-void run_chain(const Standard_eigenproblem& p, Chain& chain, const Eigensolver_options& options,
-               Chain_monitor& monitor, int index)
+void run_chain(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysis, Chain& chain,
+               const Eigensolver_options& options, Chain_monitor& monitor, int index)
 {
   const Eigen::Index n = p.A.rows();
   const int c = static_cast<int>(p.kernel.cols());
@@ -119,13 +122,15 @@ void run_chain(const Standard_eigenproblem& p, Chain& chain, const Eigensolver_o
   const int per_window = std::max(options.block_size, options.slice_size);
   const bool bounded = chain.limit < std::numeric_limits<double>::infinity();
   double density = chain.density;
-  Shifted_factor shifted(p);
+  Shifted_factor shifted(p, analysis);
   Lanczos_workspace space;
+  Eigen::MatrixXd locked_buffer;
   std::mt19937_64 generator(chain.seed);
   Ritz_set& found = chain.found;
   Ritz_set carry;
   double lo = chain.lo;
   int below_lo = chain.below_lo;
+  bool refine_solves = false;
   while(static_cast<int>(found.size()) < chain.count)
   {
     if(monitor.abandon) throw Abandoned();
@@ -187,8 +192,12 @@ void run_chain(const Standard_eigenproblem& p, Chain& chain, const Eigensolver_o
       lock.push_back(&pair.vector);
       if(pair.value <= hi) ++carried_in_window;
     }
-    Eigen::MatrixXd locked(n, static_cast<Eigen::Index>(lock.size()));
-    for(std::size_t i = 0; i < lock.size(); ++i) locked.col(static_cast<Eigen::Index>(i)) = *lock[i];
+    // Kept from window to window, grown with room to spare: a fresh block of this size
+    // is fresh memory, and its page faults cost as much as a solve (about 10 us a page).
+    const Eigen::Index locked_count = static_cast<Eigen::Index>(lock.size());
+    if(locked_buffer.cols() < locked_count) locked_buffer.resize(n, locked_count + per_window);
+    for(Eigen::Index i = 0; i < locked_count; ++i) locked_buffer.col(i) = *lock[static_cast<std::size_t>(i)];
+    const auto locked = locked_buffer.leftCols(locked_count);
     // Ritz vectors of one run are orthonormal, of different runs orthogonal to the
     // accuracy of the pairs: no need to orthonormalise them again.
     w.wanted = below - below_lo - carried_in_window;
@@ -206,22 +215,40 @@ void run_chain(const Standard_eigenproblem& p, Chain& chain, const Eigensolver_o
     {
       shifted.factor_at(w.sigma);
       if(shifted.solver.smallest_relative_pivot() < 1e-14) shifted.factor_at(w.sigma += 1e-6 * (hi - lo));
+      auto run_window = [&](const Eigensolver_options& o) {
+        window = Ritz_set();
+        new_carry = Ritz_set();
+        lanczos_window(p, shifted.K, shifted.solver, w, locked, o, generator, space, window, new_carry,
+                       chain.applications, chain.basis_used, report);
+      };
+      // Unrefined solves until a window's pairs miss their tolerance for want of
+      // refinement: that window is run again refined, and so are the rest of the chain's
+      // (the solve error grows with the shift).  Refinement doubles the cost of a solve;
+      // the vertex problems of the rocker arm and the bunny never need it, their
+      // Crouzeix-Raviart problems from a middle window on (solve residuals measured
+      // from 1e-11 to 8e-8 relative, varying from solve to solve).
+      w.refine = refine_solves;
       try
       {
-        lanczos_window(p, shifted.K, shifted.solver, w, locked, options, generator, space, window, new_carry,
-                       chain.applications, chain.basis_used, report);
+        try
+        {
+          run_window(options);
+        }
+        catch(const Inaccurate_solves&)
+        {
+          w.refine = refine_solves = true;
+          run_window(options);
+        }
       }
       catch(const Numerical_failure&)
       {
         // A block Lanczos run finds at most `block_size` copies of a repeated
         // eigenvalue quickly (symmetric meshes have multiplicities up to 5 and more):
-        // retry the window once with wider blocks.
+        // retry the window once with wider blocks (and refined solves).
         Eigensolver_options wider = options;
         wider.block_size = 4 * options.block_size;
-        window = Ritz_set();
-        new_carry = Ritz_set();
-        lanczos_window(p, shifted.K, shifted.solver, w, locked, wider, generator, space, window, new_carry,
-                       chain.applications, chain.basis_used, report);
+        w.refine = true;
+        run_window(wider);
       }
     }
     // Move the carried pairs of this window to `found`; keep the others.
@@ -242,10 +269,11 @@ void run_chain(const Standard_eigenproblem& p, Chain& chain, const Eigensolver_o
 // A shift with about `target` eigenvalues (kernel excluded) below it, counted exactly
 // by the inertia; returns that count.  Weyl's law gives the first guess, each further
 // one rescales by the count found.
-int split_point(const Standard_eigenproblem& p, int target, double& density, double& split)
+int split_point(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysis, int target, double& density,
+                double& split)
 {
   const int c = static_cast<int>(p.kernel.cols());
-  Shifted_factor shifted(p);
+  Shifted_factor shifted(p, analysis);
   split = target / density;
   int below = 0;
   for(int attempt = 0; attempt < 6; ++attempt)
@@ -321,6 +349,10 @@ Eigenpairs sliced_eigenpairs(const Standard_eigenproblem& p, int count, const Ei
   // A chain per core, each at least a window long.
   const int chains = static_cast<int>(std::min<unsigned>(cores, std::max(1, count / per_window)));
 
+  // Each window factors A - sigma D twice: an ordering that costs more to find but
+  // factors and solves faster pays on large problems.
+  Sparse_ldlt_solver analysis;
+  analysis.analyze(p.A, true);
   std::vector<Chain> chain(1);
   chain[0].below_lo = c;
   chain[0].count = count;
@@ -330,7 +362,7 @@ Eigenpairs sliced_eigenpairs(const Standard_eigenproblem& p, int count, const Ei
   for(int k = 1; k < chains; ++k)
   {
     double split = 0;
-    const int below = split_point(p, count * k / chains, density, split);
+    const int below = split_point(p, analysis, count * k / chains, density, split);
     const int previous = chain.back().below_lo - c;
     if(below <= previous || below >= count) continue; // no use: leave it to the chain before
     Chain& last = chain.back();
@@ -354,7 +386,7 @@ Eigenpairs sliced_eigenpairs(const Standard_eigenproblem& p, int count, const Ei
   auto run = [&](std::size_t k) {
     try
     {
-      run_chain(p, chain[k], options, monitor, static_cast<int>(k));
+      run_chain(p, analysis, chain[k], options, monitor, static_cast<int>(k));
     }
     catch(const Abandoned&)
     {

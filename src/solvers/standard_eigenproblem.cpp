@@ -92,7 +92,7 @@ double Standard_eigenproblem::tolerance_for(double lambda, double tolerance) con
   return std::max(tolerance, 64 * std::numeric_limits<double>::epsilon() * largest_eigenvalue_bound / std::abs(lambda));
 }
 
-void Standard_eigenproblem::residuals_of_standard(const Eigen::VectorXd& values, const Eigen::MatrixXd& Y,
+void Standard_eigenproblem::residuals_of_standard(const Eigen::VectorXd& values, const Eigen::Ref<const Eigen::MatrixXd>& Y,
                                                   double tolerance, Eigen::VectorXd& residuals,
                                                   Eigen::VectorXd* tolerances) const
 {

@@ -29,8 +29,15 @@ public:
   Sparse_ldlt_solver& operator=(const Sparse_ldlt_solver&) = delete;
 
   /// Orders and analyses the pattern of `A` (lower triangle); later `factor` calls
-  /// must use matrices with this pattern.
-  void analyze(const Eigen::SparseMatrix<double>& A);
+  /// must use matrices with this pattern.  The ordering is approximate minimum degree,
+  /// or -- with `many_factorizations` on 20,000 unknowns or more, where CHOLMOD has
+  /// METIS -- nested dissection, whose analysis costs more (0.5 s against 0.04 s on
+  /// 104k Crouzeix-Raviart unknowns) but whose factor has 20% fewer entries, factors
+  /// in half the time and solves in two thirds.
+  void analyze(const Eigen::SparseMatrix<double>& A, bool many_factorizations = false);
+  /// Takes the ordering and analysis of `other` (analysed, same pattern), without
+  /// analysing again: for factorisations of one pattern on several threads.
+  void copy_analysis(const Sparse_ldlt_solver& other);
   /// Factors `A` (analysing it first if `analyze` was not called).
   /// \throws Numerical_failure on a zero or non-finite pivot.
   void factor(const Eigen::SparseMatrix<double>& A, const std::string& what);
@@ -39,6 +46,8 @@ public:
   int negative_pivots() const;
   /// Smallest pivot magnitude relative to the largest (how close to singular).
   double smallest_relative_pivot() const;
+  /// Solves with the last factorisation.  Keeps its workspace in the solver: not to be
+  /// called on one solver from two threads at once.
   Eigen::MatrixXd solve(const Eigen::MatrixXd& B) const;
 
 private:

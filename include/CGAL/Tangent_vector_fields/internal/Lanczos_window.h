@@ -36,6 +36,7 @@ typedef std::vector<Ritz_pair> Ritz_set;
 struct Lanczos_workspace
 {
   Eigen::MatrixXd Q, H;
+  Eigen::MatrixXd ritz; // the accepted Ritz vectors of a window, before they are copied out
   void reserve(Eigen::Index n, int columns)
   {
     if(Q.rows() != n || Q.cols() < columns) Q.resize(n, columns);
@@ -50,18 +51,27 @@ struct Window
   int wanted;      // pairs to find in (lo, hi]: the inertia count less the carried ones
   double carry_hi; // pairs converged in (hi, carry_hi) are kept for the next window
   double sigma;    // shift of the run
+  bool refine = false; // one step of iterative refinement per solve with an indefinite factor
+};
+
+/// Thrown by `lanczos_window` when, without refinement, a window's pairs converged by the
+/// Lanczos estimate but missed their tolerance on the true residual: the unrefined solves
+/// of an indefinite factor are too inaccurate for this window.
+struct Inaccurate_solves
+{
 };
 
 /// Block classical Gram-Schmidt step: `C = Q_J^T Z`, then `Z -= Q_J C`, for the columns
 /// `J = first .. first + count - 1` of `Q`; returns `C`.
-Eigen::MatrixXd project_out_of_columns(const Eigen::MatrixXd& Q, Eigen::Index first, Eigen::Index count,
-                                       Eigen::MatrixXd& Z);
+Eigen::MatrixXd project_out_of_columns(const Eigen::Ref<const Eigen::MatrixXd>& Q, Eigen::Index first,
+                                       Eigen::Index count, Eigen::MatrixXd& Z);
 
 // One block Lanczos run at shift `w.sigma` on the complement of `locked` (and the
 // kernel).  Collects the converged pairs with eigenvalue in (lo, hi] into `window`
 // (exactly `wanted` of them) and those in (hi, carry_hi) into `carry`.
+// \throws Inaccurate_solves (only without `w.refine`), Numerical_failure.
 void lanczos_window(const Standard_eigenproblem& p, const Eigen::SparseMatrix<double>& K, const Sparse_ldlt_solver& solver,
-                    const Window& w, const Eigen::MatrixXd& locked, const Eigensolver_options& options,
+                    const Window& w, const Eigen::Ref<const Eigen::MatrixXd>& locked, const Eigensolver_options& options,
                     std::mt19937_64& generator, Lanczos_workspace& space, Ritz_set& window, Ritz_set& carry,
                     int& applications, int& basis_used, const std::function<void(int)>& report);
 

@@ -55,7 +55,7 @@ struct Standard_eigenproblem
   /// away from the vector (a component of the mesh a million times smaller than the one
   /// the vector lives on), which would accept a pair with only a few correct digits.
   /// Column by column, so that no temporary as large as `Y` is made.
-  void residuals_of_standard(const Eigen::VectorXd& values, const Eigen::MatrixXd& Y, double tolerance,
+  void residuals_of_standard(const Eigen::VectorXd& values, const Eigen::Ref<const Eigen::MatrixXd>& Y, double tolerance,
                              Eigen::VectorXd& residuals, Eigen::VectorXd* tolerances = nullptr) const;
 
   /// The same for vectors in the original variables.
