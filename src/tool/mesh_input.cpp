@@ -310,31 +310,50 @@ std::string off_structure_defect(const std::string& path)
   // 0, 1, 3 or 4.
   const bool colours = header.has_colors();
   const std::size_t homogeneous = header.is_homogeneous() ? 1 : 0;
-  const std::size_t vertex_numbers = (3 + homogeneous) * (header.has_normals() ? 2 : 1) +
-                                     (header.has_textures() ? 2 + homogeneous : 0);
+  const std::size_t vertex_colour_at = (3 + homogeneous) * (header.has_normals() ? 2 : 1); // then the texture
+  const std::size_t vertex_numbers = vertex_colour_at + (header.has_textures() ? 2 + homogeneous : 0);
   // Once a vertex (or a facet) has a colour, CGAL reads one for every later vertex (facet): from
   // past the end of a line that has none.
   bool vertex_coloured = false, facet_coloured = false;
-  const auto line_defect = [&](const std::string& what, long long k, std::size_t numbers, std::size_t needed,
-                               bool& coloured) {
-    if(numbers < needed)
-      return what + " " + std::to_string(k) + " starts with " + std::to_string(numbers) + " numbers where " +
+  // CGAL converts a colour to integers unchecked: an index into its colour map (negative: read
+  // before the map; huge: undefined), or 3 entries to unsigned char (whole ones as they are,
+  // fractional ones times 255).
+  const auto colour_defect = [&](const std::string& item, const double* colour, std::size_t entries) {
+    if(entries == 1)
+      return colour[0] >= 0 && colour[0] < 2147483648.
+                 ? std::string()
+                 : item + " has the colour index " + off_number(colour[0]) + ", not one of a colour map";
+    bool whole = true;
+    for(int i = 0; i < 3; ++i) whole = whole && colour[i] == std::floor(colour[i]);
+    for(int i = 0; i < 3; ++i)
+    {
+      const double byte = whole ? colour[i] : 255 * colour[i];
+      if(!(byte > -1 && byte < 256))
+        return item + " has the colour entry " + off_number(colour[i]) + ", outside 0 .. 255 (whole) or 0 .. 1";
+    }
+    return std::string();
+  };
+  const auto line_defect = [&](const std::string& what, long long k, const std::vector<double>& numbers,
+                               std::size_t needed, std::size_t first_colour, bool& coloured) {
+    if(numbers.size() < needed)
+      return what + " " + std::to_string(k) + " starts with " + std::to_string(numbers.size()) + " numbers where " +
              std::to_string(needed) + " are needed ('" + line.substr(0, 40) + "')";
-    const std::size_t extra = numbers - needed;
+    const std::size_t extra = numbers.size() - needed;
     if(!colours) return std::string();
-    if(extra == 0 && coloured)
-      return what + " " + std::to_string(k) + " has no colour, but an earlier " + what + " has one";
+    const std::string item = what + " " + std::to_string(k);
+    if(extra == 0 && coloured) return item + " has no colour, but an earlier " + what + " has one";
     coloured = coloured || extra > 0;
-    if(extra == 0 || extra == 1 || extra == 3 || extra == 4) return std::string();
-    return what + " " + std::to_string(k) + " has " + std::to_string(extra) +
-           " numbers after its data; a colour has 1, 3 or 4";
+    if(extra == 0) return std::string();
+    if(extra == 1 || extra == 3 || extra == 4) return colour_defect(item, numbers.data() + first_colour, extra);
+    return item + " has " + std::to_string(extra) + " numbers after its data; a colour has 1, 3 or 4";
   };
   for(long long v = 0; v < vertices; ++v)
   {
     // One vertex a line, as CGAL reads them; CGAL reads the colour of a missing line too.
     if(!next_line())
       return "the file ends after " + std::to_string(v) + " of its " + std::to_string(vertices) + " vertices";
-    const std::string defect = line_defect("vertex", v, off_numbers(line).size(), vertex_numbers, vertex_coloured);
+    const std::string defect =
+        line_defect("vertex", v, off_numbers(line), vertex_numbers, vertex_colour_at, vertex_coloured);
     if(!defect.empty()) return defect;
   }
   for(long long f = 0; f < facets; ++f)
@@ -347,8 +366,8 @@ std::string off_structure_defect(const std::string& path)
     if(!(count >= 0 && count == std::floor(count) && count <= double(numbers.size() - 1)))
       return "facet " + std::to_string(f) + " announces " + std::to_string(count) + " vertices but its line holds " +
              std::to_string(numbers.size() - 1) + " numbers after the count";
-    const std::string defect =
-        line_defect("facet", f, numbers.size(), 1 + static_cast<std::size_t>(count), facet_coloured);
+    const std::size_t facet_numbers = 1 + static_cast<std::size_t>(count);
+    const std::string defect = line_defect("facet", f, numbers, facet_numbers, facet_numbers, facet_coloured);
     if(!defect.empty()) return defect;
     // CGAL converts each index (read as a double) to std::size_t unchecked: 1e90 is undefined.
     for(std::size_t k = 1; k <= static_cast<std::size_t>(count); ++k)

@@ -199,8 +199,20 @@ TEST(MeshInput, OffFacetCountBeyondItsLineIsRefused)
                                                                "3 0 1 2 1 0 0\n3 1 3 2\n");
   EXPECT_EQ(mesh_error(facets), "cannot read a polygon mesh from '" + facets + "' (malformed OFF: facet 1 has no "
                                 "colour, but an earlier facet has one)");
+  // CGAL converted colours to integers unchecked: a colour-map index of 6.7e53 (undefined), a
+  // negative one (read before its map), an entry of 300 (undefined as unsigned char).
+  const std::string colour_index = file_with("colour_index.off", "COFF\n3 1 0\n0 0 0 6.7e53\n1 0 0 1\n0 1 0 1\n3 0 1 2\n");
+  EXPECT_EQ(mesh_error(colour_index), "cannot read a polygon mesh from '" + colour_index + "' (malformed OFF: vertex "
+                                      "0 has the colour index 6.7e+53, not one of a colour map)");
+  const std::string negative_index = file_with("negative_index.off", "COFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 -1\n");
+  EXPECT_EQ(mesh_error(negative_index), "cannot read a polygon mesh from '" + negative_index + "' (malformed OFF: "
+                                        "facet 0 has the colour index -1, not one of a colour map)");
+  const std::string bright = file_with("bright.off", "COFF\n3 1 0\n0 0 0 300 0 0\n1 0 0 0 0 0\n0 1 0 0 0 0\n"
+                                                     "3 0 1 2\n");
+  EXPECT_EQ(mesh_error(bright), "cannot read a polygon mesh from '" + bright + "' (malformed OFF: vertex 0 has the "
+                                "colour entry 300, outside 0 .. 255 (whole) or 0 .. 1)");
   // Coloured vertices with uncoloured facets, and the reverse, are well formed.
-  const std::string mixed = file_with("mixed_colours.off", "COFF\n3 1 0\n0 0 0 1 0 0\n1 0 0 0 1 0\n0 1 0 0 0 1\n"
+  const std::string mixed = file_with("mixed_colours.off", "COFF\n3 1 0\n0 0 0 1 0 0\n1 0 0 0 1 0\n0 1 0 0.5 0.5 1\n"
                                                            "3 0 1 2\n");
   EXPECT_EQ(read_mesh_file(mixed).polygons.size(), 1u);
   // CGAL's scanner takes "OFF'4" for a keyword and its counts: the header is read by that scanner.
