@@ -151,9 +151,7 @@ void lanczos_window(const Standard_eigenproblem& p, const Eigen::SparseMatrix<do
         S.col(i) = T.col(all[i]);
         values[i] = w.sigma + 1 / theta[all[i]];
       }
-      const Eigen::Index accepted = static_cast<Eigen::Index>(all.size());
-      if(space.ritz.rows() != n || space.ritz.cols() < accepted) space.ritz.resize(n, accepted + wanted / 2 + b);
-      auto Y = space.ritz.leftCols(accepted);
+      auto Y = Lanczos_workspace::columns(space.ritz, n, static_cast<Eigen::Index>(all.size()), wanted / 2 + b);
       Y.noalias() = Q.leftCols(complete) * S;
       Eigen::VectorXd residuals, tolerances;
       p.residuals_of_standard(values, Y, options.tolerance, residuals, &tolerances);

@@ -124,7 +124,6 @@ void run_chain(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysi
   double density = chain.density;
   Shifted_factor shifted(p, analysis);
   Lanczos_workspace space;
-  Eigen::MatrixXd locked_buffer;
   std::mt19937_64 generator(chain.seed);
   Ritz_set& found = chain.found;
   Ritz_set carry;
@@ -192,12 +191,8 @@ void run_chain(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysi
       lock.push_back(&pair.vector);
       if(pair.value <= hi) ++carried_in_window;
     }
-    // Kept from window to window, grown with room to spare: a fresh block of this size
-    // is fresh memory, and its page faults cost as much as a solve (about 10 us a page).
-    const Eigen::Index locked_count = static_cast<Eigen::Index>(lock.size());
-    if(locked_buffer.cols() < locked_count) locked_buffer.resize(n, locked_count + per_window);
-    for(Eigen::Index i = 0; i < locked_count; ++i) locked_buffer.col(i) = *lock[static_cast<std::size_t>(i)];
-    const auto locked = locked_buffer.leftCols(locked_count);
+    auto locked = Lanczos_workspace::columns(space.locked, n, static_cast<Eigen::Index>(lock.size()), per_window);
+    for(Eigen::Index i = 0; i < locked.cols(); ++i) locked.col(i) = *lock[static_cast<std::size_t>(i)];
     // Ritz vectors of one run are orthonormal, of different runs orthogonal to the
     // accuracy of the pairs: no need to orthonormalise them again.
     w.wanted = below - below_lo - carried_in_window;

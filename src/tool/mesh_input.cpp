@@ -73,6 +73,17 @@ bool read_ply_face_properties(const std::string& path, std::vector<std::pair<std
   return true;
 }
 
+// Bytes of a PLY scalar type, 0 for a name that is not one.
+int ply_type_size(const std::string& type)
+{
+  static const std::map<std::string, int> sizes = {
+      {"char", 1},  {"uchar", 1},  {"int8", 1},  {"uint8", 1},  {"short", 2},   {"ushort", 2},  {"int16", 2},
+      {"uint16", 2}, {"int", 4},   {"uint", 4},  {"int32", 4},  {"uint32", 4},  {"float", 4},   {"float32", 4},
+      {"double", 8}, {"float64", 8}};
+  const auto it = sizes.find(type);
+  return it == sizes.end() ? 0 : it->second;
+}
+
 // CGAL 5.5's PLY reader adds a "property" to the last element read without checking that
 // there is one (a property line before any element line crashes it), and reads an element's
 // count as std::size_t ("-1" becomes 2^64 - 1, items it then loops over).  Returns the reason
@@ -95,10 +106,9 @@ std::string ply_header_defect(const std::string& path)
       const auto it = properties.find(c);
       if(it == properties.end()) return "element '" + element + "' has no property '" + c + "'";
       // Types that are no PLY type at all are refused with the body's walk.
-      static const std::set<std::string> not_floating = {"list", "char",  "uchar",  "int8", "uint8", "short", "ushort",
-                                                         "int16", "uint16", "int", "uint", "int32", "uint32"};
       const std::string& type = it->second;
-      if(not_floating.count(type))
+      const bool floating = type == "float" || type == "float32" || type == "double" || type == "float64";
+      if(type == "list" || (ply_type_size(type) > 0 && !floating))
         return "the property '" + std::string(c) + "' of element '" + element + "' has the type '" +
                type.substr(0, 40) + "', not float or double";
     }
@@ -145,17 +155,6 @@ std::string ply_header_defect(const std::string& path)
   // Without one, CGAL still read a body: there (found by the mesh fuzzer) it took a list count
   // of 1.4 billion from bytes that no walk of the declared elements reaches.
   return "no end_header line";
-}
-
-// Bytes of a PLY scalar type, 0 for a name that is not one.
-int ply_type_size(const std::string& type)
-{
-  static const std::map<std::string, int> sizes = {
-      {"char", 1},  {"uchar", 1},  {"int8", 1},  {"uint8", 1},  {"short", 2},   {"ushort", 2},  {"int16", 2},
-      {"uint16", 2}, {"int", 4},   {"uint", 4},  {"int32", 4},  {"uint32", 4},  {"float", 4},   {"float32", 4},
-      {"double", 8}, {"float64", 8}};
-  const auto it = sizes.find(type);
-  return it == sizes.end() ? 0 : it->second;
 }
 
 // CGAL 5.5's PLY reader sizes a list by the count the file gives, unchecked (a count of 482

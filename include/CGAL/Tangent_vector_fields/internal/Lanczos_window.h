@@ -36,12 +36,21 @@ typedef std::vector<Ritz_pair> Ritz_set;
 struct Lanczos_workspace
 {
   Eigen::MatrixXd Q, H;
-  Eigen::MatrixXd ritz; // the accepted Ritz vectors of a window, before they are copied out
+  Eigen::MatrixXd locked; // the converged vectors a window is kept orthogonal to
+  Eigen::MatrixXd ritz;   // the accepted Ritz vectors of a window, before they are copied out
   void reserve(Eigen::Index n, int columns)
   {
     if(Q.rows() != n || Q.cols() < columns) Q.resize(n, columns);
     if(H.rows() < columns) H.resize(columns, columns);
     H.topLeftCorner(columns, columns).setZero();
+  }
+  /// The first `count` columns of `buffer`, grown (with `spare` more) when it has fewer:
+  /// a fresh block of this size is fresh memory, whose page faults cost as much as a solve.
+  typedef Eigen::Block<Eigen::MatrixXd, Eigen::Dynamic, Eigen::Dynamic, true> Columns;
+  static Columns columns(Eigen::MatrixXd& buffer, Eigen::Index n, Eigen::Index count, Eigen::Index spare)
+  {
+    if(buffer.rows() != n || buffer.cols() < count) buffer.resize(n, count + spare);
+    return buffer.leftCols(count);
   }
 };
 
