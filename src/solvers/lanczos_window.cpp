@@ -17,13 +17,42 @@ namespace CGAL {
 namespace Tangent_vector_fields {
 namespace internal {
 
+double* Vector_store::add(const Eigen::Ref<const Eigen::VectorXd>& v)
+{
+  // 64 columns: a few percent of the basis per block, so that the peak memory while the
+  // pairs are copied out stays near one copy of the basis.
+  constexpr Eigen::Index block_columns = 64;
+  if(blocks_.empty() || !blocks_.back() || blocks_.back()->used == block_columns ||
+     blocks_.back()->columns.rows() != v.size())
+  {
+    blocks_.push_back(std::make_unique<Block>());
+    resize_in_huge_pages(blocks_.back()->columns, v.size(), block_columns);
+  }
+  Block& block = *blocks_.back();
+  double* column = block.columns.col(block.used).data();
+  block.columns.col(block.used++) = v;
+  ++block.live;
+  return column;
+}
+
+bool Vector_store::release(const double* column)
+{
+  for(std::unique_ptr<Block>& block : blocks_)
+    if(block && column >= block->columns.data() && column < block->columns.data() + block->columns.size())
+    {
+      if(--block->live == 0 && block.get() != blocks_.back().get()) block.reset();
+      return true;
+    }
+  return false;
+}
+
 // One block Lanczos run at shift `w.sigma` on the complement of `locked` (and the
 // kernel).  Collects the converged pairs with eigenvalue in (lo, hi] into `window`
 // (exactly `wanted` of them) and those in (hi, carry_hi) into `carry`.
 void lanczos_window(const Standard_eigenproblem& p, const Eigen::SparseMatrix<double>& K, const Sparse_ldlt_solver& solver,
                     const Window& w, const Eigen::Ref<const Eigen::MatrixXd>& locked, const Eigensolver_options& options,
                     std::mt19937_64& generator, Lanczos_workspace& space, Ritz_set& window, Ritz_set& carry,
-                    int& applications, int& basis_used, const std::function<void(int)>& report)
+                    Vector_store& store, int& applications, int& basis_used, const std::function<void(int)>& report)
 {
   const Eigen::Index n = p.sqrt_d.size();
   const int c = static_cast<int>(p.kernel.cols());
@@ -164,7 +193,7 @@ void lanczos_window(const Standard_eigenproblem& p, const Eigen::SparseMatrix<do
           if(i >= in_window.size() && !(residuals[i] <= tolerances[i]))
             continue; // carry only if accurate
           Ritz_set& target = i < in_window.size() ? window : carry;
-          target.push_back({values[i], Y.col(i), residuals[i], tolerances[i]});
+          target.push_back({values[i], store.add(Y.col(i)), n, residuals[i], tolerances[i]});
         }
         basis_used = std::max(basis_used, complete);
         return;

@@ -107,6 +107,7 @@ struct Chain
   double density = 1; // estimated eigenvalues per unit of lambda
   std::uint64_t seed = 1;
   // Results.
+  Vector_store store; // the vectors of `found`
   Ritz_set found;
   double end = 0;    // every eigenvalue in (lo, end] is in `found`
   int below_end = 0; // inertia at `end`
@@ -181,18 +182,19 @@ void run_chain(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysi
     // (just below 0; measured: a shift at the middle of (0, hi] left them at 1e-10).
     Window w{lo, hi, 0, hi == chain.limit ? hi : hi + 0.5 * (hi - lo), lo == 0 ? -1e-2 / total_mass : 0.5 * (lo + hi)};
     // Lock the found vectors near the window (and the carried ones) out of the run.
-    std::vector<const Eigen::VectorXd*> lock;
+    std::vector<const double*> lock;
     const double reach = lo - 0.5 * (hi - lo);
     for(const Ritz_pair& pair : found)
-      if(pair.value > reach) lock.push_back(&pair.vector);
+      if(pair.value > reach) lock.push_back(pair.data);
     int carried_in_window = 0;
     for(const Ritz_pair& pair : carry)
     {
-      lock.push_back(&pair.vector);
+      lock.push_back(pair.data);
       if(pair.value <= hi) ++carried_in_window;
     }
     auto locked = Lanczos_workspace::columns(space.locked, n, static_cast<Eigen::Index>(lock.size()), per_window);
-    for(Eigen::Index i = 0; i < locked.cols(); ++i) locked.col(i) = *lock[static_cast<std::size_t>(i)];
+    for(Eigen::Index i = 0; i < locked.cols(); ++i)
+      locked.col(i) = Eigen::Map<const Eigen::VectorXd>(lock[static_cast<std::size_t>(i)], n);
     // Ritz vectors of one run are orthonormal, of different runs orthogonal to the
     // accuracy of the pairs: no need to orthonormalise them again.
     w.wanted = below - below_lo - carried_in_window;
@@ -214,7 +216,7 @@ void run_chain(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysi
         window = Ritz_set();
         new_carry = Ritz_set();
         lanczos_window(p, shifted.K, shifted.solver, w, locked, o, generator, space, window, new_carry,
-                       chain.applications, chain.basis_used, report);
+                       chain.store, chain.applications, chain.basis_used, report);
       };
       // Unrefined solves until a window's pairs miss their tolerance for want of
       // refinement: that window is run again refined, and so are the rest of the chain's
@@ -298,7 +300,7 @@ void join_at(const Standard_eigenproblem& p, double split, double tolerance, Rit
   if(near.size() < 2) return;
   const Eigen::Index n = p.d.size(), k = static_cast<Eigen::Index>(near.size());
   Eigen::MatrixXd Y(n, k);
-  for(Eigen::Index j = 0; j < k; ++j) Y.col(j) = pairs[near[j]].vector;
+  for(Eigen::Index j = 0; j < k; ++j) Y.col(j) = pairs[near[j]].vector();
   const Eigen::MatrixXd X = p.inv_sqrt_d.asDiagonal() * Y;
   Eigen::MatrixXd a = X.transpose() * (p.A * X), m = Y.transpose() * Y;
   a = (a + a.transpose()).eval() / 2;
@@ -309,7 +311,13 @@ void join_at(const Standard_eigenproblem& p, double split, double tolerance, Rit
   Eigen::VectorXd residuals, tolerances;
   p.residuals_of_standard(small.eigenvalues(), rotated, tolerance, residuals, &tolerances);
   for(Eigen::Index j = 0; j < k; ++j)
-    pairs[near[j]] = {small.eigenvalues()[j], rotated.col(j), residuals[j], tolerances[j]};
+  {
+    Ritz_pair& pair = pairs[near[j]];
+    pair.value = small.eigenvalues()[j];
+    pair.vector() = rotated.col(j);
+    pair.residual = residuals[j];
+    pair.tolerance = tolerances[j];
+  }
 }
 
 // Sets OpenBLAS to one thread while the chains run, and back afterwards.
@@ -370,7 +378,7 @@ Eigenpairs sliced_eigenpairs(const Standard_eigenproblem& p, int count, const Ei
     next.count = count - below;
     next.density = density;
     next.seed = options.seed + 0x9e3779b97f4a7c15ull * static_cast<std::uint64_t>(k);
-    chain.push_back(next);
+    chain.push_back(std::move(next));
     splits.push_back(split);
   }
   for(Chain& ch : chain) ch.density = density;
@@ -449,6 +457,7 @@ Eigenpairs sliced_eigenpairs(const Standard_eigenproblem& p, int count, const Ei
   {
     for(Ritz_pair& pair : ch.found)
       if(pair.value <= ch.limit) found.push_back(std::move(pair));
+      else ch.store.release(pair.data); // the next chain's
     ch.found.clear();
     applications += ch.applications;
     basis_used = std::max(basis_used, ch.basis_used);
@@ -466,7 +475,7 @@ Eigenpairs sliced_eigenpairs(const Standard_eigenproblem& p, int count, const Ei
   Eigenpairs result;
   result.values.resize(count);
   result.residuals.resize(count);
-  result.vectors.resize(n, count);
+  resize_in_huge_pages(result.vectors, n, count);
   for(int i = 0; i < count; ++i)
   {
     Ritz_pair& pair = found[order[i]];
@@ -479,8 +488,10 @@ Eigenpairs sliced_eigenpairs(const Standard_eigenproblem& p, int count, const Ei
     }
     result.values[i] = pair.value;
     result.residuals[i] = pair.residual;
-    result.vectors.col(i) = p.inv_sqrt_d.cwiseProduct(pair.vector);
-    pair.vector = Eigen::VectorXd(); // the peak memory is one copy of the basis, not two
+    result.vectors.col(i) = p.inv_sqrt_d.cwiseProduct(pair.vector());
+    // The peak memory is one copy of the basis (and a block per chain), not two.
+    for(Chain& ch : chain)
+      if(ch.store.release(pair.data)) break;
   }
   result.basis_size = basis_used;
   result.operator_applications = applications;

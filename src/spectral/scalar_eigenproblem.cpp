@@ -3,6 +3,7 @@
 
 #include <CGAL/Tangent_vector_fields/internal/scalar_eigenproblem.h>
 #include <CGAL/Tangent_vector_fields/errors.h>
+#include <CGAL/Tangent_vector_fields/internal/huge_pages.h>
 
 namespace CGAL {
 namespace Tangent_vector_fields {
@@ -79,7 +80,9 @@ Scalar_eigenproblem coexact_problem(const Operator_matrices& ops, double area)
 Eigen::MatrixXd Scalar_eigenproblem::expand(Eigen::MatrixXd X, double factor) const
 {
   if(unknowns.empty()) return X *= factor;
-  Eigen::MatrixXd Y = Eigen::MatrixXd::Zero(full_size, X.cols());
+  Eigen::MatrixXd Y;
+  resize_in_huge_pages(Y, full_size, X.cols());
+  Y.setZero();
   for(Eigen::Index j = 0; j < X.cols(); ++j)
     for(std::size_t i = 0; i < unknowns.size(); ++i) Y(unknowns[i], j) = factor * X(static_cast<Eigen::Index>(i), j);
   return Y;

@@ -10,11 +10,13 @@
 
 #include <CGAL/Tangent_vector_fields/Sparse_ldlt_solver.h>
 #include <CGAL/Tangent_vector_fields/internal/Standard_eigenproblem.h>
+#include <CGAL/Tangent_vector_fields/internal/huge_pages.h>
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
 #include <functional>
+#include <memory>
 #include <random>
 #include <vector>
 
@@ -22,12 +24,35 @@ namespace CGAL {
 namespace Tangent_vector_fields {
 namespace internal {
 
+/// Where the converged vectors of a chain of windows live: columns of large blocks in
+/// huge pages (a fresh allocation per vector faulted its pages in one by one: 137k of the
+/// 192k page faults of the bunny's basis).  A block is freed once all its columns are
+/// given back.  Addresses stay valid until then.
+class Vector_store
+{
+public:
+  /// A new column holding `v`.
+  double* add(const Eigen::Ref<const Eigen::VectorXd>& v);
+  /// Gives `column` back; false if it is not one of this store's.
+  bool release(const double* column);
+
+private:
+  struct Block
+  {
+    Eigen::MatrixXd columns;
+    Eigen::Index used = 0, live = 0;
+  };
+  std::vector<std::unique_ptr<Block>> blocks_;
+};
+
 /// A converged pair with its true residual and the tolerance it met.
 struct Ritz_pair
 {
   double value;
-  Eigen::VectorXd vector; ///< standard form (`D^1/2 x`), unit length
+  double* data;      ///< a column of a `Vector_store`: the standard form (`D^1/2 x`), unit length
+  Eigen::Index size; ///< of the vector
   double residual, tolerance;
+  Eigen::Map<Eigen::VectorXd> vector() const { return Eigen::Map<Eigen::VectorXd>(data, size); }
 };
 typedef std::vector<Ritz_pair> Ritz_set;
 
@@ -40,7 +65,7 @@ struct Lanczos_workspace
   Eigen::MatrixXd ritz;   // the accepted Ritz vectors of a window, before they are copied out
   void reserve(Eigen::Index n, int columns)
   {
-    if(Q.rows() != n || Q.cols() < columns) Q.resize(n, columns);
+    if(Q.rows() != n || Q.cols() < columns) resize_in_huge_pages(Q, n, columns);
     if(H.rows() < columns) H.resize(columns, columns);
     H.topLeftCorner(columns, columns).setZero();
   }
@@ -49,7 +74,7 @@ struct Lanczos_workspace
   typedef Eigen::Block<Eigen::MatrixXd, Eigen::Dynamic, Eigen::Dynamic, true> Columns;
   static Columns columns(Eigen::MatrixXd& buffer, Eigen::Index n, Eigen::Index count, Eigen::Index spare)
   {
-    if(buffer.rows() != n || buffer.cols() < count) buffer.resize(n, count + spare);
+    if(buffer.rows() != n || buffer.cols() < count) resize_in_huge_pages(buffer, n, count + spare);
     return buffer.leftCols(count);
   }
 };
@@ -77,12 +102,13 @@ Eigen::MatrixXd project_out_of_columns(const Eigen::Ref<const Eigen::MatrixXd>& 
 
 // One block Lanczos run at shift `w.sigma` on the complement of `locked` (and the
 // kernel).  Collects the converged pairs with eigenvalue in (lo, hi] into `window`
-// (exactly `wanted` of them) and those in (hi, carry_hi) into `carry`.
+// (exactly `wanted` of them) and those in (hi, carry_hi) into `carry`, their vectors
+// in `store`.
 // \throws Inaccurate_solves (only without `w.refine`), Numerical_failure.
 void lanczos_window(const Standard_eigenproblem& p, const Eigen::SparseMatrix<double>& K, const Sparse_ldlt_solver& solver,
                     const Window& w, const Eigen::Ref<const Eigen::MatrixXd>& locked, const Eigensolver_options& options,
                     std::mt19937_64& generator, Lanczos_workspace& space, Ritz_set& window, Ritz_set& carry,
-                    int& applications, int& basis_used, const std::function<void(int)>& report);
+                    Vector_store& store, int& applications, int& basis_used, const std::function<void(int)>& report);
 
 } // namespace internal
 } // namespace Tangent_vector_fields

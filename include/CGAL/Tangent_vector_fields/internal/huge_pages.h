@@ -1,0 +1,56 @@
+// Copyright (c) 2026 The Tangent_vector_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TANGENT_VECTOR_FIELDS_INTERNAL_HUGE_PAGES_H
+#define CGAL_TANGENT_VECTOR_FIELDS_INTERNAL_HUGE_PAGES_H
+
+/// \file huge_pages.h
+/// Large dense matrices (Krylov bases, eigenfunctions) backed by 2 MB pages where the
+/// system allows it.  Fresh memory costs one page fault per 4 KB page on first touch,
+/// about 10 microseconds each on a virtual machine: filling a new 104k x 504 matrix of
+/// doubles took 1.12 s in 4 KB pages and 0.04 s in 2 MB pages (2-core VM, Linux with
+/// transparent huge pages in `madvise` mode, the usual default).
+
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <cstdint>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
+namespace CGAL {
+namespace Tangent_vector_fields {
+namespace internal {
+
+/// Asks the kernel to back the whole 2 MB pages inside `[data, data + bytes)` with huge
+/// pages.  Only pages not touched yet gain; a hint, so failure is ignored.
+inline void advise_huge_pages(void* data, std::size_t bytes)
+{
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  constexpr std::uintptr_t huge = std::uintptr_t(2) << 20;
+  if(bytes < 2 * huge) return;
+  const std::uintptr_t begin = (reinterpret_cast<std::uintptr_t>(data) + huge - 1) & ~(huge - 1);
+  const std::uintptr_t end = (reinterpret_cast<std::uintptr_t>(data) + bytes) & ~(huge - 1);
+  if(end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+#else
+  (void)data;
+  (void)bytes;
+#endif
+}
+
+/// `m.resize(rows, cols)`, with fresh storage advised to use huge pages (contents undefined).
+template <class Matrix>
+void resize_in_huge_pages(Matrix& m, Eigen::Index rows, Eigen::Index cols)
+{
+  if(m.rows() == rows && m.cols() == cols) return;
+  m.resize(rows, cols);
+  advise_huge_pages(m.data(), sizeof(typename Matrix::Scalar) * static_cast<std::size_t>(m.size()));
+}
+
+} // namespace internal
+} // namespace Tangent_vector_fields
+} // namespace CGAL
+
+#endif
