@@ -219,11 +219,12 @@ void run_chain(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysi
                        chain.store, chain.applications, chain.basis_used, report);
       };
       // Unrefined solves until a window's pairs miss their tolerance for want of
-      // refinement: that window is run again refined, and so are the rest of the chain's
-      // (the solve error grows with the shift).  Refinement doubles the cost of a solve;
-      // the vertex problems of the rocker arm and the bunny never need it, their
-      // Crouzeix-Raviart problems from a middle window on (solve residuals measured
-      // from 1e-11 to 8e-8 relative, varying from solve to solve).
+      // refinement and polishing them (`lanczos_window`) does not help: that window is
+      // run again refined, and so are the rest of the chain's (the solve error grows
+      // with the shift).  Refinement made the vertex problems of the rocker arm and the
+      // bunny 1.15-1.2x slower, and they never need it; their Crouzeix-Raviart problems
+      // miss by a little in a few windows (solve residuals measured from 1e-11 to 8e-8
+      // relative, varying from solve to solve), which polishing repairs.
       w.refine = refine_solves;
       try
       {

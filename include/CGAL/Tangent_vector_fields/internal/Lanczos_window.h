@@ -89,8 +89,9 @@ struct Window
 };
 
 /// Thrown by `lanczos_window` when, without refinement, a window's pairs converged by the
-/// Lanczos estimate but missed their tolerance on the true residual: the unrefined solves
-/// of an indefinite factor are too inaccurate for this window.
+/// Lanczos estimate but missed their tolerance on the true residual, and polishing the few
+/// that missed (a solve shifted next to them, Rayleigh-Ritz on `A`) did not bring them
+/// there: the unrefined solves of an indefinite factor are too inaccurate for this window.
 struct Inaccurate_solves
 {
 };
