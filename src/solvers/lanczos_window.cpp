@@ -40,7 +40,7 @@ bool Vector_store::release(const double* column)
   for(std::unique_ptr<Block>& block : blocks_)
     if(block && column >= block->columns.data() && column < block->columns.data() + block->columns.size())
     {
-      if(--block->live == 0 && block.get() != blocks_.back().get()) block.reset();
+      if(--block->live == 0) block.reset(); // the next `add` starts a new block if it was the last
       return true;
     }
   return false;

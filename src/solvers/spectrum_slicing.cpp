@@ -473,6 +473,13 @@ Eigenpairs sliced_eigenpairs(const Standard_eigenproblem& p, int count, const Ei
   if(static_cast<int>(order.size()) < count)
     throw Numerical_failure("spectrum slicing: the chains found " + std::to_string(order.size()) + " of " +
                             std::to_string(count) + " eigenpairs");
+  // The peak memory is one copy of the basis (and a block of vectors per chain), not two:
+  // the vectors not returned are given back first, the others as they are copied.
+  auto release = [&](const Ritz_pair& pair) {
+    for(Chain& ch : chain)
+      if(ch.store.release(pair.data)) return;
+  };
+  for(std::size_t i = static_cast<std::size_t>(count); i < order.size(); ++i) release(found[order[i]]);
   Eigenpairs result;
   result.values.resize(count);
   result.residuals.resize(count);
@@ -490,9 +497,7 @@ Eigenpairs sliced_eigenpairs(const Standard_eigenproblem& p, int count, const Ei
     result.values[i] = pair.value;
     result.residuals[i] = pair.residual;
     result.vectors.col(i) = p.inv_sqrt_d.cwiseProduct(pair.vector());
-    // The peak memory is one copy of the basis (and a block per chain), not two.
-    for(Chain& ch : chain)
-      if(ch.store.release(pair.data)) break;
+    release(pair);
   }
   result.basis_size = basis_used;
   result.operator_applications = applications;
