@@ -22,15 +22,11 @@ double* Vector_store::add(const Eigen::Ref<const Eigen::VectorXd>& v)
   // 64 columns: a few percent of the basis per block, so that the peak memory while the
   // pairs are copied out stays near one copy of the basis.
   constexpr Eigen::Index block_columns = 64;
-  if(blocks_.empty() || !blocks_.back() || blocks_.back()->used == block_columns ||
-     blocks_.back()->columns.rows() != v.size())
-  {
-    blocks_.push_back(std::make_unique<Block>());
-    resize_in_huge_pages(blocks_.back()->columns, v.size(), block_columns);
-  }
+  if(blocks_.empty() || !blocks_.back() || blocks_.back()->used == block_columns || blocks_.back()->rows != v.size())
+    blocks_.push_back(std::make_unique<Block>(v.size(), block_columns));
   Block& block = *blocks_.back();
-  double* column = block.columns.col(block.used).data();
-  block.columns.col(block.used++) = v;
+  double* column = block.memory.data() + block.used++ * block.rows;
+  Eigen::Map<Eigen::VectorXd>(column, block.rows) = v;
   ++block.live;
   return column;
 }
@@ -38,7 +34,7 @@ double* Vector_store::add(const Eigen::Ref<const Eigen::VectorXd>& v)
 bool Vector_store::release(const double* column)
 {
   for(std::unique_ptr<Block>& block : blocks_)
-    if(block && column >= block->columns.data() && column < block->columns.data() + block->columns.size())
+    if(block && block->holds(column))
     {
       if(--block->live == 0) block.reset(); // the next `add` starts a new block if it was the last
       return true;

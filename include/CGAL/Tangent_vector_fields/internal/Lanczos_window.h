@@ -24,8 +24,8 @@ namespace CGAL {
 namespace Tangent_vector_fields {
 namespace internal {
 
-/// Where the converged vectors of a chain of windows live: columns of large blocks in
-/// huge pages (a fresh allocation per vector faulted its pages in one by one: 137k of the
+/// Where the converged vectors of a chain of windows live: columns of large blocks mapped
+/// from the system in huge pages (a fresh allocation per vector faulted its pages in one by one: 137k of the
 /// 192k page faults of the bunny's basis).  A block is freed once all its columns are
 /// given back.  Addresses stay valid until then.
 class Vector_store
@@ -39,8 +39,16 @@ public:
 private:
   struct Block
   {
-    Eigen::MatrixXd columns;
-    Eigen::Index used = 0, live = 0;
+    Block(Eigen::Index rows, Eigen::Index capacity)
+      : memory(static_cast<std::size_t>(rows * capacity)), rows(rows), capacity(capacity)
+    {
+    }
+    Mapped_doubles memory;
+    Eigen::Index rows, capacity, used = 0, live = 0;
+    bool holds(const double* column) const
+    {
+      return column >= memory.data() && column < memory.data() + rows * capacity;
+    }
   };
   std::vector<std::unique_ptr<Block>> blocks_;
 };

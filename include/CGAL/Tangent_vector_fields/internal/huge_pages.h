@@ -13,8 +13,10 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <new>
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -48,6 +50,41 @@ void resize_in_huge_pages(Matrix& m, Eigen::Index rows, Eigen::Index cols)
   m.resize(rows, cols);
   advise_huge_pages(m.data(), sizeof(typename Matrix::Scalar) * static_cast<std::size_t>(m.size()));
 }
+
+/// Doubles mapped straight from the system (Linux: `mmap`, advised to use huge pages), so
+/// that freeing them gives the memory back at once whatever the allocator's settings
+/// (`keep_freed_memory` keeps blocks up to 32 MB in the heap, where the converged vectors of
+/// the rocker arm's eigensolver stayed next to their copy: 0.50 GB peak against 0.36 GB).
+class Mapped_doubles
+{
+public:
+  explicit Mapped_doubles(std::size_t count) : bytes_(sizeof(double) * std::max<std::size_t>(count, 1))
+  {
+#if defined(__linux__)
+    void* p = mmap(nullptr, bytes_, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if(p == MAP_FAILED) throw std::bad_alloc();
+    data_ = static_cast<double*>(p);
+    advise_huge_pages(data_, bytes_);
+#else
+    data_ = new double[bytes_ / sizeof(double)];
+#endif
+  }
+  ~Mapped_doubles()
+  {
+#if defined(__linux__)
+    munmap(data_, bytes_);
+#else
+    delete[] data_;
+#endif
+  }
+  Mapped_doubles(const Mapped_doubles&) = delete;
+  Mapped_doubles& operator=(const Mapped_doubles&) = delete;
+  double* data() const { return data_; }
+
+private:
+  std::size_t bytes_;
+  double* data_ = nullptr;
+};
 
 } // namespace internal
 } // namespace Tangent_vector_fields
