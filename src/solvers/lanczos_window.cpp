@@ -92,33 +92,51 @@ bool polish(const Standard_eigenproblem& p, const Window& w, const Eigen::Ref<co
   Eigen::MatrixXd Z = p.sqrt_d.asDiagonal() * X;
   deflate(Z);
   for(int pass = 0; pass < 2; ++pass) Z -= Y * (Y.transpose() * Z);
-  Eigen::MatrixXd B(n, k + Z.cols());
-  B.leftCols(k) = Y;
-  B.rightCols(Z.cols()) = orthonormal_columns(Z);
-  Eigen::MatrixXd G = B.transpose() * (p.inv_sqrt_d.asDiagonal() * (p.A * (p.inv_sqrt_d.asDiagonal() * B)).eval());
+  Z = orthonormal_columns(Z);
+  // G = [Y Z]^T D^-1/2 A D^-1/2 [Y Z], 8 columns at a time, and the Ritz vectors one at a
+  // time: no temporary as large as Y (250 MB at 519k unknowns).
+  const Eigen::Index f = Z.cols(), m = k + f;
+  Eigen::MatrixXd G(m, m), V;
+  for(Eigen::Index j0 = 0; j0 < m; j0 += 8)
+  {
+    V.resize(n, std::min<Eigen::Index>(8, m - j0));
+    for(Eigen::Index j = 0; j < V.cols(); ++j)
+    {
+      if(j0 + j < k) V.col(j) = Y.col(j0 + j);
+      else V.col(j) = Z.col(j0 + j - k);
+    }
+    const Eigen::MatrixXd AV = p.inv_sqrt_d.asDiagonal() * (p.A * (p.inv_sqrt_d.asDiagonal() * V)).eval();
+    G.block(0, j0, k, V.cols()).noalias() = Y.transpose() * AV;
+    G.block(k, j0, f, V.cols()).noalias() = Z.transpose() * AV;
+  }
   G = (G + G.transpose()).eval() / 2;
   Eigen::VectorXd mu;
   symmetric_eigen(G, mu);
   std::vector<Eigen::Index> chosen;
-  int in_window = 0;
   for(Eigen::Index i = 0; i < mu.size(); ++i)
-    if(mu[i] > w.lo && mu[i] <= w.hi) chosen.push_back(i), ++in_window;
-  if(in_window != w.wanted) return false;
+    if(mu[i] > w.lo && mu[i] <= w.hi) chosen.push_back(i);
+  const std::size_t in_window = chosen.size();
+  if(static_cast<int>(in_window) != w.wanted) return false;
   for(Eigen::Index i = 0; i < mu.size(); ++i)
     if(mu[i] > w.hi && mu[i] < w.carry_hi) chosen.push_back(i);
-  Eigen::MatrixXd R(n, static_cast<Eigen::Index>(chosen.size()));
-  Eigen::VectorXd ritz_values(R.cols()), r, t;
-  for(Eigen::Index j = 0; j < R.cols(); ++j)
+  Ritz_set accepted;
+  Eigen::VectorXd v(n), value(1), r, t;
+  for(std::size_t j = 0; j < chosen.size(); ++j)
   {
-    R.col(j).noalias() = B * G.col(chosen[static_cast<std::size_t>(j)]);
-    ritz_values[j] = mu[chosen[static_cast<std::size_t>(j)]];
+    v.noalias() = Y * G.col(chosen[j]).head(k);
+    v.noalias() += Z * G.col(chosen[j]).tail(f);
+    value[0] = mu[chosen[j]];
+    p.residuals_of_standard(value, v, tolerance, r, &t);
+    if(r[0] <= t[0]) accepted.push_back({value[0], store.add(v), n, r[0], t[0]});
+    else if(j < in_window) // a window pair still misses: give the vectors back
+    {
+      for(const Ritz_pair& pair : accepted) store.release(pair.data);
+      return false;
+    }
   }
-  p.residuals_of_standard(ritz_values, R, tolerance, r, &t);
-  for(int j = 0; j < in_window; ++j)
-    if(!(r[j] <= t[j])) return false;
-  for(Eigen::Index j = 0; j < R.cols(); ++j)
-    if(j < in_window || r[j] <= t[j]) // carry only if accurate
-      (j < in_window ? window : carry).push_back({ritz_values[j], store.add(R.col(j)), n, r[j], t[j]});
+  // Window pairs first, then carried ones that met their tolerance.
+  window.insert(window.end(), accepted.begin(), accepted.begin() + static_cast<std::ptrdiff_t>(in_window));
+  carry.insert(carry.end(), accepted.begin() + static_cast<std::ptrdiff_t>(in_window), accepted.end());
   return true;
 }
 
