@@ -13,7 +13,7 @@
 //                       [--threads T]  (eigensolver threads; 0: one per core)
 //                       [--default-allocator]  (without keep_freed_memory(), which the tvf tool calls)
 //        bench_spectral --against-slepc [data-dir] [--meshes ...] [--exact N] [--coexact N]
-//                       [--ranks R] [--mpirun CMD] [--slepc-options "..."]
+//                       [--ranks R] [--mpirun CMD] [--slepc-options "..."] [--no-krylov-schur]
 // --against-slepc: the package's eigensolver next to SLEPc on the same matrices
 // (bench/slepc_side_by_side.cpp; needs a build with -DTVF_WITH_SLEPC=ON).
 
@@ -150,7 +150,7 @@ int main(int argc, char** argv)
   std::string dir = TVF_SHARED_DATA_DIR;
   std::string which = "rocker,bunny,armadillo";
   int exact = 500, coexact = 500, compression_size = 2000, threads = 0;
-  bool sweep = true, compression = true, default_allocator = false;
+  bool sweep = true, compression = true, default_allocator = false, krylov_schur = true;
   for(int i = 1; i < argc; ++i)
   {
     if(!std::strcmp(argv[i], "--meshes") && i + 1 < argc) which = argv[++i];
@@ -165,6 +165,7 @@ int main(int argc, char** argv)
     else if(!std::strcmp(argv[i], "--ranks") && i + 1 < argc) ranks = std::atoi(argv[++i]);
     else if(!std::strcmp(argv[i], "--mpirun") && i + 1 < argc) mpirun = argv[++i];
     else if(!std::strcmp(argv[i], "--slepc-options") && i + 1 < argc) slepc_options = argv[++i];
+    else if(!std::strcmp(argv[i], "--no-krylov-schur")) krylov_schur = false;
     else dir = argv[i];
   }
   // As the tvf tool does (keep_freed_memory.h).
@@ -187,9 +188,11 @@ int main(int argc, char** argv)
     slepc_request.ranks = ranks;
     slepc_request.mpirun = mpirun;
     slepc_request.extra_options = slepc_options;
+    slepc_request.krylov_schur = krylov_schur;
     return tvf_bench::run_against_slepc(slepc_request);
 #else
     (void)ranks;
+    (void)krylov_schur;
     std::fprintf(stderr, "bench_spectral was built without SLEPc: --against-slepc needs cmake -DTVF_WITH_SLEPC=ON "
                          "and libslepc-real-dev\n");
     return 2;

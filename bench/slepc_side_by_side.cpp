@@ -197,11 +197,14 @@ bool compare_on(const Slepc_session& slepc, const Side_by_side_request& request,
     rows.back().note = note;
   }
 
-  Slepc_settings krylov_schur;
-  krylov_schur.method = Slepc_method::krylov_schur;
-  krylov_schur.nev = wanted + 10;
-  krylov_schur.extra_options = request.extra_options;
-  rows.push_back({"SLEPc Krylov-Schur, 1 rank", slepc.solve(p.A, p.d, p.kernel, krylov_schur), {}});
+  if(request.krylov_schur)
+  {
+    Slepc_settings krylov_schur;
+    krylov_schur.method = Slepc_method::krylov_schur;
+    krylov_schur.nev = wanted + 10;
+    krylov_schur.extra_options = request.extra_options;
+    rows.push_back({"SLEPc Krylov-Schur, 1 rank", slepc.solve(p.A, p.d, p.kernel, krylov_schur), {}});
+  }
 
   bool all_right = true;
   std::printf("  %-30s %8s %9s %6s %10s %10s\n", "method", "seconds", "/package", "found", "residual", "eig. diff");
