@@ -264,7 +264,8 @@ int run_all(const Side_by_side_request& request)
     "  slicing, mpirun -np %d:                             %s\n"
     "  Krylov-Schur, target -1, constants deflated:       %s\n",
     request.exact, request.coexact, extra_pairs, threads ? threads : "unset", slepc_options(slicing).c_str(),
-    request.ranks, slepc_options(parallel).c_str(), slepc_options(krylov_schur).c_str());
+    request.ranks, slepc_options(parallel).c_str(),
+    request.krylov_schur ? slepc_options(krylov_schur).c_str() : "(left out: --no-krylov-schur)");
 
   bool all_right = true;
   Totals all;
