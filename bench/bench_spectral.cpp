@@ -18,6 +18,7 @@
 // (bench/slepc_side_by_side.cpp; needs a build with -DTVF_WITH_SLEPC=ON).
 
 #include "bench_meshes.h"
+#include "peak_memory.h"
 #ifdef TVF_HAS_SLEPC
 #include "slepc_side_by_side.h"
 #endif
@@ -30,9 +31,6 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
-#ifdef __GLIBC__
-#include <malloc.h>
-#endif
 #include <functional>
 #include <iostream>
 #include <random>
@@ -59,24 +57,7 @@ std::shared_ptr<TVF::Hodge_solver> load(const std::string& dir, const Source& s,
   return tvf_bench::load_mesh(dir, s.file, s.subdivisions, faces);
 }
 
-// Peak resident memory of this process (Linux: VmHWM, in GB) since the last reset (writing 5 to
-// /proc/self/clear_refs), so that each mesh's set-up is measured on its own; -1 if unknown.
-// The previous mesh's memory is given back first (glibc keeps freed pages otherwise).
-void reset_peak_memory()
-{
-#ifdef __GLIBC__
-  malloc_trim(0);
-#endif
-  std::ofstream("/proc/self/clear_refs") << "5";
-}
-
-double peak_memory_gb()
-{
-  std::ifstream status("/proc/self/status");
-  for(std::string line; std::getline(status, line);)
-    if(line.rfind("VmHWM:", 0) == 0) return std::atof(line.c_str() + 6) / (1024. * 1024.);
-  return -1;
-}
+double peak_memory_gb() { return tvf_bench::peak_memory_bytes() / (1024. * 1024. * 1024.); }
 
 std::string completeness(const TVF::Basis_report& r)
 {
@@ -215,7 +196,7 @@ int main(int argc, char** argv)
     int faces = 0;
     auto solver = load(dir, s, faces);
     if(!solver) continue;
-    reset_peak_memory();
+    tvf_bench::reset_peak_memory();
     const auto start = std::chrono::steady_clock::now();
     const auto& ops = solver->operators();
     ops.G(), ops.G_star_interior(), ops.W(), ops.W_star(), ops.field_masses();
@@ -247,7 +228,7 @@ int main(int argc, char** argv)
     {
       auto solver = load(dir, rocker, faces);
       if(!solver) break;
-      reset_peak_memory();
+      tvf_bench::reset_peak_memory();
       const auto start = std::chrono::steady_clock::now();
       TVF::Eigenfield_basis basis(solver, TVF::Basis_request::lowest(d));
       const double t = seconds_since(start), peak = peak_memory_gb();

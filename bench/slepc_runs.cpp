@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 
 #include "slepc_runs.h"
+#include "peak_memory.h"
 
 #include <slepceps.h>
 
@@ -157,6 +158,8 @@ private:
 Slepc_outcome solve_on(MPI_Comm comm, Mat A, Vec d, const std::vector<Petsc_vec>& kernel, const Slepc_settings& s)
 {
   Slepc_outcome out;
+  reset_peak_memory();
+  const double resident = resident_bytes();
   Petsc_mat B = diagonal_matrix(comm, A, d);
   Options_scope options(slepc_options(s));
   Petsc_eps eps;
@@ -219,6 +222,10 @@ Slepc_outcome solve_on(MPI_Comm comm, Mat A, Vec d, const std::vector<Petsc_vec>
     out.values[i] = values[order[i]];
     out.residuals[i] = residuals[order[i]];
   }
+  // A rank that cannot tell makes the sum negative: unknown.
+  const double added = resident < 0 ? -1e300 : peak_memory_bytes() - resident;
+  TVF_MPI(MPI_Allreduce(&added, &out.peak_bytes, 1, MPI_DOUBLE, MPI_SUM, comm));
+  out.peak_bytes = std::max(out.peak_bytes, -1.0);
   out.ok = true;
   return out;
 }
@@ -278,7 +285,7 @@ void write_outcome(const std::string& path, const Slepc_outcome& o)
 {
   std::ofstream out(path);
   out.precision(17);
-  out << (o.ok ? "ok" : "failed") << " " << o.seconds << " " << o.values.size() << "\n" << o.error << "\n";
+  out << (o.ok ? "ok" : "failed") << " " << o.seconds << " " << o.peak_bytes << " " << o.values.size() << "\n" << o.error << "\n";
   for(Eigen::Index i = 0; i < o.values.size(); ++i) out << o.values[i] << " " << o.residuals[i] << "\n";
   if(!out) throw std::runtime_error("cannot write " + path);
 }
@@ -289,7 +296,7 @@ Slepc_outcome read_outcome(const std::string& path)
   Slepc_outcome o;
   std::string status;
   Eigen::Index count = 0;
-  in >> status >> o.seconds >> count;
+  in >> status >> o.seconds >> o.peak_bytes >> count;
   in.ignore(1);
   std::getline(in, o.error);
   if(!in || count < 0) throw std::runtime_error("cannot read " + path);

@@ -36,6 +36,9 @@ struct Slepc_outcome
   std::string error;
   double seconds = 0;        ///< set-up (factorisations) + solve + eigenvectors; no file I/O
   double launch_seconds = 0; ///< mpirun runs: the whole child run, start-up and files included
+  /// Resident memory the run added at its peak over what its process held at the start
+  /// (the matrices loaded), summed over the ranks; -1 if unknown.
+  double peak_bytes = -1;
   Eigen::VectorXd values, residuals;
 };
 

@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 
 #include "slepc_side_by_side.h"
+#include "peak_memory.h"
 
 #include <CGAL/Tangent_vector_fields/Generalized_eigensolver.h>
 #include <CGAL/Tangent_vector_fields/internal/scalar_eigenproblem.h>
@@ -48,10 +49,13 @@ Row run_package(const TVF::internal::Scalar_eigenproblem& p, int count)
   Row row{"package lowest_eigenpairs", {}, {}};
   try
   {
+    reset_peak_memory();
+    const double resident = resident_bytes();
     const auto start = std::chrono::steady_clock::now();
     const TVF::Eigenpairs pairs = TVF::lowest_eigenpairs(p.A, p.d, count, p.kernel,
                                                          TVF::internal::eigensolver_options(TVF::Basis_options()));
     row.outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if(resident >= 0) row.outcome.peak_bytes = peak_memory_bytes() - resident;
     row.outcome.values = pairs.values;
     row.outcome.residuals.resize(pairs.values.size());
     for(Eigen::Index i = 0; i < pairs.values.size(); ++i)
@@ -110,11 +114,12 @@ Comparison compare(const Slepc_outcome& outcome, const Eigen::VectorXd& referenc
   return c;
 }
 
-// Seconds of each method over the problems so far; a failure voids the method's total.
+// Seconds of each method over the problems so far (a failure voids the method's total) and
+// its largest peak memory.
 struct Totals
 {
   std::vector<std::string> methods;
-  std::vector<double> seconds;
+  std::vector<double> seconds, peaks;
   bool complete = true; // false once the package failed on a problem (no rows to add)
 
   void add(const std::vector<Row>& rows)
@@ -124,9 +129,13 @@ struct Totals
       {
         methods.push_back(r.method);
         seconds.push_back(0);
+        peaks.push_back(-1);
       }
     for(std::size_t i = 0; i < rows.size(); ++i)
+    {
       seconds[i] = rows[i].outcome.ok ? seconds[i] + rows[i].outcome.seconds : std::numeric_limits<double>::quiet_NaN();
+      peaks[i] = std::max(peaks[i], rows[i].outcome.peak_bytes);
+    }
   }
 };
 
@@ -150,7 +159,8 @@ void print_totals(const std::string& title, const Totals& totals)
   std::printf("%s:", title.c_str());
   for(std::size_t i = 0; i < totals.methods.size(); ++i)
     if(std::isnan(totals.seconds[i])) std::printf("%s %s failed", i ? ";" : "", totals.methods[i].c_str());
-    else std::printf("%s %s %.2f s", i ? ";" : "", totals.methods[i].c_str(), totals.seconds[i]);
+    else std::printf("%s %s %.2f s (peak %.2f GB)", i ? ";" : "", totals.methods[i].c_str(), totals.seconds[i],
+                     totals.peaks[i] / 1e9);
   const int best = best_slepc(totals.seconds);
   if(best > 0 && !std::isnan(totals.seconds[0]))
     std::printf("\n  => SLEPc best (%s) / package = %.2f\n", totals.methods[best].c_str(),
@@ -207,7 +217,8 @@ bool compare_on(const Slepc_session& slepc, const Side_by_side_request& request,
   }
 
   bool all_right = true;
-  std::printf("  %-30s %8s %9s %6s %10s %10s\n", "method", "seconds", "/package", "found", "residual", "eig. diff");
+  std::printf("  %-30s %8s %9s %8s %9s %6s %10s %10s\n", "method", "seconds", "/package", "peak GB", "/package",
+              "found", "residual", "eig. diff");
   for(std::size_t i = 0; i < rows.size(); ++i)
   {
     const Row& row = rows[i];
@@ -229,8 +240,9 @@ bool compare_on(const Slepc_session& slepc, const Side_by_side_request& request,
     }
     char difference[16] = "-";
     if(i > 0) std::snprintf(difference, sizeof difference, "%.1e", c.difference);
-    std::printf("  %-30s %8.2f %9.2f %6ld %10.1e %10s%s%s\n", row.method.c_str(), row.outcome.seconds,
-                row.outcome.seconds / package.seconds, static_cast<long>(row.outcome.values.size()), c.residual,
+    std::printf("  %-30s %8.2f %9.2f %8.3f %9.2f %6ld %10.1e %10s%s%s\n", row.method.c_str(), row.outcome.seconds,
+                row.outcome.seconds / package.seconds, row.outcome.peak_bytes / 1e9,
+                row.outcome.peak_bytes / package.peak_bytes, static_cast<long>(row.outcome.values.size()), c.residual,
                 difference, note.empty() ? "" : " ", note.c_str());
   }
   std::vector<double> seconds;
@@ -256,7 +268,8 @@ int run_all(const Side_by_side_request& request)
     "Package eigensolver against SLEPc on the same matrices: the basis' exact (W, vertex masses) and coexact\n"
     "(W*, interior-edge masses) problems scaled to unit area, %d + %d lowest pairs.  seconds: set-up\n"
     "(factorisations) + solve + eigenvectors; residual: largest |D^-1/2 (A x - l D x)| / (l |D^1/2 x|) of the\n"
-    "returned vectors, computed by the bench; eig. diff: largest relative difference to the package's\n"
+    "returned vectors, computed by the bench; peak GB: resident memory the run added at its peak (summed over\n"
+    "the ranks; the matrices already loaded); eig. diff: largest relative difference to the package's\n"
     "eigenvalues; found: pairs returned (the package asks for %d extra to place the interval's end).\n"
     "Residual and difference are over the pairs in the slicing interval.  BLAS threads: OPENBLAS_NUM_THREADS=%s\n"
     "for the package and the 1-rank runs, 1 per rank under mpirun.  SLEPc options:\n"
@@ -294,8 +307,10 @@ int run_all(const Side_by_side_request& request)
       {
         all.methods.push_back(totals.methods[i]);
         all.seconds.push_back(0);
+        all.peaks.push_back(-1);
       }
       all.seconds[i] += totals.seconds[i];
+      all.peaks[i] = std::max(all.peaks[i], totals.peaks[i]);
     }
   }
   if(request.meshes.size() > 1) print_totals("\nall meshes, exact + coexact", all);
