@@ -130,7 +130,6 @@ void run_chain(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysi
   Ritz_set carry;
   double lo = chain.lo;
   int below_lo = chain.below_lo;
-  bool refine_solves = false;
   while(static_cast<int>(found.size()) < chain.count)
   {
     if(monitor.abandon) throw Abandoned();
@@ -218,14 +217,16 @@ void run_chain(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysi
         lanczos_window(p, shifted.K, shifted.solver, w, locked, o, generator, space, window, new_carry,
                        chain.store, chain.applications, chain.basis_used, report);
       };
-      // Unrefined solves until a window's pairs miss their tolerance for want of
-      // refinement and polishing them (`lanczos_window`) does not help: that window is
-      // run again refined, and so are the rest of the chain's (the solve error grows
-      // with the shift).  Refinement made the vertex problems of the rocker arm and the
-      // bunny 1.15-1.2x slower, and they never need it; their Crouzeix-Raviart problems
-      // miss by a little in a few windows (solve residuals measured from 1e-11 to 8e-8
-      // relative, varying from solve to solve), which polishing repairs.
-      w.refine = refine_solves;
+      // Unrefined solves; a window whose pairs miss their tolerance for want of
+      // refinement, and which polishing (`lanczos_window`) does not repair, is run again
+      // refined.  The next window starts unrefined again: whether one misses varies from
+      // run to run (the bunny's Crouzeix-Raviart problem: no window of 504 pairs, one of
+      // 500), and refining the rest of the chain made such a chain 1.2x slower per window
+      // (500 pairs: 17.5-18.6 s against 21.4-25.4 s with the rest refined).  Refinement made
+      // the vertex problems of the rocker arm and the bunny 1.15-1.2x slower, and they
+      // never need it; their Crouzeix-Raviart problems miss by a little in a few windows
+      // (solve residuals measured from 1e-11 to 8e-8 relative, varying from solve to solve).
+      w.refine = false;
       try
       {
         try
@@ -234,7 +235,7 @@ void run_chain(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysi
         }
         catch(const Inaccurate_solves&)
         {
-          w.refine = refine_solves = true;
+          w.refine = true;
           run_window(options);
         }
       }
