@@ -226,7 +226,6 @@ void run_chain(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysi
       // the vertex problems of the rocker arm and the bunny 1.15-1.2x slower, and they
       // never need it; their Crouzeix-Raviart problems miss by a little in a few windows
       // (solve residuals measured from 1e-11 to 8e-8 relative, varying from solve to solve).
-      w.refine = false;
       try
       {
         try
