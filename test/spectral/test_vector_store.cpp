@@ -1,8 +1,9 @@
 // Copyright (c) 2026 The Tangent_vector_fields authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
-// The store of a slicing chain's converged vectors: contents kept across blocks, a block
-// freed exactly when all its columns are given back, foreign addresses refused.
+// Pieces of a slicing chain: the store of its converged vectors (contents kept across
+// blocks, a block freed exactly when all its columns are given back, foreign addresses
+// refused) and the block Gram-Schmidt kernel against its Krylov basis.
 
 #include <CGAL/Tangent_vector_fields/internal/Lanczos_window.h>
 
@@ -43,6 +44,31 @@ TEST(VectorStore, KeepsEveryVectorAndFreesABlockOnceAllItsColumnsAreBack)
 
   double outside = 0;
   EXPECT_FALSE(store.release(&outside));
+}
+
+// The hand-vectorised projection against columns of a basis equals the plain dense
+// products C = Q_J^T Z, Z - Q_J C, for row counts across the kernel's 8192-row panels, column
+// counts that are not multiples of its four, and a column range starting inside the basis.
+TEST(BlockGramSchmidt, ProjectionEqualsTheDenseProducts)
+{
+  for(const Eigen::Index n : {5, 8192, 20001})
+    for(const int block : {4, 3})
+      for(const Eigen::Index count : {1, 4, 7, 13})
+      {
+        const Eigen::Index first = 2;
+        const Eigen::MatrixXd Q = Eigen::MatrixXd::Random(n, first + count + 3);
+        const Eigen::MatrixXd Z0 = Eigen::MatrixXd::Random(n, block);
+        const Eigen::MatrixXd expected_C = Q.middleCols(first, count).transpose() * Z0;
+        const Eigen::MatrixXd expected_Z = Z0 - Q.middleCols(first, count) * expected_C;
+        Eigen::MatrixXd Z = Z0;
+        const Eigen::MatrixXd C = TVF::internal::project_out_of_columns(Q, first, count, Z);
+        // Sums of n products of numbers below 1 in another order: a few n eps apart.
+        const double tolerance = 1e-13 * static_cast<double>(n);
+        ASSERT_EQ(C.rows(), count);
+        ASSERT_EQ(C.cols(), block);
+        EXPECT_LE((C - expected_C).cwiseAbs().maxCoeff(), tolerance) << "n " << n << " count " << count;
+        EXPECT_LE((Z - expected_Z).cwiseAbs().maxCoeff(), tolerance * count) << "n " << n << " count " << count;
+      }
 }
 
 } // namespace
