@@ -181,8 +181,10 @@ int main(int argc, char** argv)
   }
 
   std::printf("Spectral basis benchmark: %d exact + %d coexact eigenfields (+ harmonic), one run each, seconds.\n"
-              "set-up = operators + both eigenproblems + harmonic fields; residual = largest\n"
-              "|D^-1/2 (A x - l D x)| / (l |D^1/2 x|); complete = inertia/expected of the exact and the coexact\n"
+              "set-up = operators + both eigenproblems + harmonic fields; exact, coexact = their shares of the\n"
+              "eigenproblems' wall time (solved together on one pool of threads; shared out by thread time);\n"
+              "residual = largest "
+              "|D^-1/2 (A x - l D x)| / (l |D^1/2 x|);\ncomplete = inertia/expected of the exact and the coexact\n"
               "problem at the last window boundary (Sylvester: eigenvalues below it / pairs found + kernel);\n"
               "peak = largest resident memory of the process during the set-up (GB, the mesh loaded before it\n"
               "included); basis = eigenfunctions and harmonic fields kept (GB)\n\n",

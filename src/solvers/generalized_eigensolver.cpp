@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <memory>
 #include <cmath>
 #include <random>
 #include <sstream>
@@ -96,34 +97,31 @@ void purify(const Sparse_matrix& A, const Problem& p, Eigenpairs& result, int co
 
 } // namespace
 
-Eigenpairs lowest_eigenpairs(const Sparse_matrix& A, const Eigen::VectorXd& d, int count, const Eigen::MatrixXd& kernel,
-                             const Eigensolver_options& options)
+namespace {
+
+void check_request(const Eigenproblem_request& r, const Eigensolver_options& options)
 {
-  const int n = static_cast<int>(A.rows());
-  const int c = static_cast<int>(kernel.cols());
-  if(A.cols() != n || d.size() != n || (c > 0 && kernel.rows() != n))
+  const Eigen::Index n = r.A.rows(), c = r.kernel.cols();
+  if(r.A.cols() != n || r.D.size() != n || (c > 0 && r.kernel.rows() != n))
     throw Invalid_input("eigenproblem: matrix, masses and kernel sizes differ");
-  if(count < 0 || count > n - c)
-    throw Invalid_input("asked for " + std::to_string(count) + " eigenpairs but the space has dimension " +
+  if(r.count < 0 || r.count > n - c)
+    throw Invalid_input("asked for " + std::to_string(r.count) + " eigenpairs but the space has dimension " +
                         std::to_string(n - c));
-  if(n > 0 && !(d.minCoeff() > 0)) throw Invalid_input("eigenproblem: the masses must be positive");
+  if(n > 0 && !(r.D.minCoeff() > 0)) throw Invalid_input("eigenproblem: the masses must be positive");
   // A NaN tolerance would never be met: the eigensolver would fail after all its restarts
   // with a misleading "misses the tolerance"; 0 or less would ask for the impossible.
   if(!(options.tolerance > 0 && options.tolerance < 1))
     throw Invalid_input("eigenproblem: the tolerance must lie in (0, 1) (got " + std::to_string(options.tolerance) + ")");
-  const Problem p(A, d, kernel);
-  if(count == 0)
-  {
-    Eigenpairs empty;
-    empty.vectors.resize(n, 0);
-    empty.complete_below = n - c > 0 ? 0. : std::numeric_limits<double>::infinity();
-    return empty;
-  }
-  const bool dense =
-      options.allow_dense && (n <= options.dense_size || count + 3 * options.block_size > (n - c) / 3);
-  if(!dense) return internal::sliced_eigenpairs(p, count, options);
+}
+
+// The pairs of a small problem (or one asking for a third of its space) by a dense
+// eigensolver; false when they are not accurate enough and slicing must find them.
+bool dense_lowest(const Sparse_matrix& A, const Problem& p, int count, const Eigensolver_options& options,
+                  Eigenpairs& result)
+{
+  const int n = static_cast<int>(A.rows()), c = static_cast<int>(p.kernel.cols());
   Eigen::MatrixXd subspace;
-  Eigenpairs result = dense_eigenpairs(p, count, &subspace);
+  result = dense_eigenpairs(p, count, &subspace);
   // A dense eigensolver leaves roundoff of size eps |x| on every entry, which the largest
   // eigenvalues amplify: with a spectrum spread over many orders (components of very
   // different sizes) the low pairs keep only a few digits.  Inverse iteration cleans them.
@@ -141,12 +139,54 @@ Eigenpairs lowest_eigenpairs(const Sparse_matrix& A, const Eigen::VectorXd& d, i
     // (CGAL's ALSTOM_TEST4.off, angles of 0.02 degrees: residuals 5e-10 .. 1.4e-9 over 60
     // steps, against 1e-10), while Lanczos runs from a block the operator has smoothed
     // reach it; so do those.
-    if(!accurate()) return internal::sliced_eigenpairs(p, count, options);
+    if(!accurate()) return false;
   }
   // Complete by construction; the inertia count is recorded all the same.
-  if(count < n - c) result.completeness = check_completeness(A, d, result.values, c, count);
+  if(count < n - c) result.completeness = check_completeness(A, p.d, result.values, c, count);
   result.values.conservativeResize(count);
+  return true;
+}
+
+} // namespace
+
+std::vector<Eigenpairs> lowest_eigenpairs_of_each(const std::vector<Eigenproblem_request>& problems,
+                                                  const Eigensolver_options& options)
+{
+  for(const Eigenproblem_request& r : problems) check_request(r, options);
+  std::vector<Eigenpairs> result(problems.size());
+  std::vector<std::unique_ptr<Problem>> standard;
+  std::vector<internal::Sliced_request> sliced;
+  std::vector<std::size_t> sliced_index;
+  for(std::size_t i = 0; i < problems.size(); ++i)
+  {
+    const Eigenproblem_request& r = problems[i];
+    const int n = static_cast<int>(r.A.rows()), c = static_cast<int>(r.kernel.cols());
+    if(r.count == 0)
+    {
+      result[i].vectors.resize(n, 0);
+      result[i].complete_below = n - c > 0 ? 0. : std::numeric_limits<double>::infinity();
+      continue;
+    }
+    standard.push_back(std::make_unique<Problem>(r.A, r.D, r.kernel));
+    const Problem& p = *standard.back();
+    const bool dense =
+        options.allow_dense && (n <= options.dense_size || r.count + 3 * options.block_size > (n - c) / 3);
+    if(dense && dense_lowest(r.A, p, r.count, options, result[i])) continue;
+    sliced.push_back({p, r.count});
+    sliced_index.push_back(i);
+  }
+  if(!sliced.empty())
+  {
+    std::vector<Eigenpairs> solved = internal::sliced_eigenpairs(sliced, options);
+    for(std::size_t k = 0; k < solved.size(); ++k) result[sliced_index[k]] = std::move(solved[k]);
+  }
   return result;
+}
+
+Eigenpairs lowest_eigenpairs(const Sparse_matrix& A, const Eigen::VectorXd& d, int count, const Eigen::MatrixXd& kernel,
+                             const Eigensolver_options& options)
+{
+  return std::move(lowest_eigenpairs_of_each({{A, d, count, kernel}}, options).front());
 }
 
 } // namespace Tangent_vector_fields

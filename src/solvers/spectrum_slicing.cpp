@@ -10,39 +10,23 @@
 // the window count with blocks of 4) and the converged vectors next to the window,
 // instead of against everything found so far.
 //
-// The windows of one chain follow each other (each locks out its neighbour's vectors
-// and carries the pairs it found beyond its end into the next).  A large request is
-// cut at an inertia-counted split into chains that run at once, one per core, each
-// with one BLAS thread: the sparse factorisations and solves are sequential code, and
-// the orthogonalisation is memory-bound products of a tall basis with a block of 4
-// columns, which a second BLAS thread barely speeds up.
+// This file: a chain of windows (`Slicing_chain.h`), the split points between chains and
+// their join; `sliced_eigenpairs.cpp` runs the chains of one or several problems at once.
 
 #define EIGEN_USE_BLAS
 
-#include <CGAL/Tangent_vector_fields/internal/Lanczos_window.h>
-#include <CGAL/Tangent_vector_fields/internal/Standard_eigenproblem.h>
-#include <CGAL/Tangent_vector_fields/Sparse_ldlt_solver.h>
+#include <CGAL/Tangent_vector_fields/internal/Slicing_chain.h>
 #include <CGAL/Tangent_vector_fields/errors.h>
 
 #include <Eigen/Dense>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
-#include <condition_variable>
-#include <exception>
-#include <functional>
 #include <limits>
-#include <mutex>
 #include <random>
-#include <sstream>
-#include <thread>
+#include <string>
 #include <vector>
-
-// OpenBLAS's thread count, where OpenBLAS is the BLAS (weak: absent with another BLAS).
-extern "C" void openblas_set_num_threads(int) __attribute__((weak));
-extern "C" int openblas_get_num_threads(void) __attribute__((weak));
 
 namespace CGAL {
 namespace Tangent_vector_fields {
@@ -51,28 +35,6 @@ namespace internal {
 namespace {
 
 typedef Eigen::SparseMatrix<double> Sparse_matrix;
-
-// Thrown inside a chain when another chain failed: its own work is of no use any more.
-struct Abandoned
-{
-};
-
-// What the chains share while they run: converged counts for the progress report,
-// and a flag that stops every chain once one has failed.
-struct Chain_monitor
-{
-  std::vector<std::atomic<int>> converged;
-  std::atomic<bool> abandon{false};
-  int wanted = 0;
-  std::function<void()> report; // set when the chain runs on the caller's thread
-  explicit Chain_monitor(int chains) : converged(chains) {}
-  int total() const
-  {
-    int t = 0;
-    for(const auto& c : converged) t += c.load();
-    return std::min(t, wanted);
-  }
-};
 
 // The shifted matrix A - sigma D and its LDL^T, one per chain (a factor is not shared
 // between threads); the fill-reducing analysis is made once, for every chain.
@@ -94,29 +56,12 @@ struct Shifted_factor
   }
 };
 
-// A chain of windows: from `lo` (with `below_lo` eigenvalues, kernel included, at or
-// below it) either up to `limit`, whose inertia `below_limit` is known, or -- with an
-// infinite limit -- until `count` pairs above `lo` are found.
-struct Chain
-{
-  double lo = 0;
-  int below_lo = 0;
-  int count = 0;
-  double limit = std::numeric_limits<double>::infinity();
-  int below_limit = 0;
-  double density = 1; // estimated eigenvalues per unit of lambda
-  std::uint64_t seed = 1;
-  // Results.
-  Vector_store store; // the vectors of `found`
-  Ritz_set found;
-  double end = 0;    // every eigenvalue in (lo, end] is in `found`
-  int below_end = 0; // inertia at `end`
-  int applications = 0, basis_used = 0;
-};
+} // namespace
 
 void run_chain(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysis, Chain& chain,
                const Eigensolver_options& options, Chain_monitor& monitor, int index)
 {
+  const auto start = std::chrono::steady_clock::now();
   const Eigen::Index n = p.A.rows();
   const int c = static_cast<int>(p.kernel.cols());
   const double total_mass = p.d.sum();
@@ -262,11 +207,10 @@ void run_chain(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysi
   }
   chain.end = lo;
   chain.below_end = below_lo;
+  chain.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// A shift with about `target` eigenvalues (kernel excluded) below it, counted exactly
-// by the inertia; returns that count.  Weyl's law gives the first guess, each further
-// one rescales by the count found.
+// Weyl's law gives the first guess, each further one rescales by the count found.
 int split_point(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysis, int target, double& density,
                 double& split)
 {
@@ -319,194 +263,6 @@ void join_at(const Standard_eigenproblem& p, double split, double tolerance, Rit
     pair.residual = residuals[j];
     pair.tolerance = tolerances[j];
   }
-}
-
-// Sets OpenBLAS to one thread while the chains run, and back afterwards.
-struct One_blas_thread
-{
-  int before = 0;
-  One_blas_thread()
-  {
-    if(openblas_get_num_threads && openblas_set_num_threads)
-    {
-      before = openblas_get_num_threads();
-      openblas_set_num_threads(1);
-    }
-  }
-  ~One_blas_thread()
-  {
-    if(before > 0) openblas_set_num_threads(before);
-  }
-};
-
-} // namespace
-
-Eigenpairs sliced_eigenpairs(const Standard_eigenproblem& p, int count, const Eigensolver_options& options)
-{
-  const Eigen::Index n = p.A.rows();
-  const int c = static_cast<int>(p.kernel.cols());
-  const int per_window = std::max(options.block_size, options.slice_size);
-  // Weyl's law on a surface of area |D|: about |D| lambda / (4 pi) eigenvalues below lambda.
-  double density = p.d.sum() / (4 * M_PI);
-  const unsigned cores = options.threads > 0 ? static_cast<unsigned>(options.threads)
-                                             : std::max(1u, std::thread::hardware_concurrency());
-  // A chain per core, each at least a window long.
-  const int chains = static_cast<int>(std::min<unsigned>(cores, std::max(1, count / per_window)));
-
-  // Each window factors A - sigma D twice: an ordering that costs more to find but
-  // factors and solves faster pays on large problems.
-  Sparse_ldlt_solver analysis;
-  analysis.analyze(p.A, true);
-  std::vector<Chain> chain(1);
-  chain[0].below_lo = c;
-  chain[0].count = count;
-  chain[0].density = density;
-  chain[0].seed = options.seed;
-  std::vector<double> splits;
-  for(int k = 1; k < chains; ++k)
-  {
-    double split = 0;
-    const int below = split_point(p, analysis, count * k / chains, density, split);
-    const int previous = chain.back().below_lo - c;
-    if(below <= previous || below >= count) continue; // no use: leave it to the chain before
-    Chain& last = chain.back();
-    last.limit = split;
-    last.below_limit = below + c;
-    last.count = below - previous;
-    Chain next;
-    next.lo = split;
-    next.below_lo = below + c;
-    next.count = count - below;
-    next.density = density;
-    next.seed = options.seed + 0x9e3779b97f4a7c15ull * static_cast<std::uint64_t>(k);
-    chain.push_back(std::move(next));
-    splits.push_back(split);
-  }
-  for(Chain& ch : chain) ch.density = density;
-
-  Chain_monitor monitor(static_cast<int>(chain.size()));
-  monitor.wanted = count;
-  std::vector<std::exception_ptr> failure(chain.size());
-  auto run = [&](std::size_t k) {
-    try
-    {
-      run_chain(p, analysis, chain[k], options, monitor, static_cast<int>(k));
-    }
-    catch(const Abandoned&)
-    {
-    }
-    catch(...)
-    {
-      failure[k] = std::current_exception();
-      monitor.abandon = true;
-    }
-  };
-  if(chain.size() == 1)
-  {
-    // One chain runs on the caller's thread and reports after every Rayleigh-Ritz step.
-    if(options.progress) monitor.report = [&] { options.progress({monitor.total(), count, 0}); };
-    run(0);
-  }
-  else
-  {
-    // The caller's thread only waits and reports progress: the callback is never
-    // called from another thread, and a callback that throws (a cancel) stops all.
-    One_blas_thread one_thread;
-    std::mutex mutex;
-    std::condition_variable done_signal;
-    std::size_t done = 0;
-    std::vector<std::thread> threads;
-    for(std::size_t k = 0; k < chain.size(); ++k)
-      threads.emplace_back([&, k] {
-        run(k);
-        std::lock_guard<std::mutex> lock(mutex);
-        ++done;
-        done_signal.notify_one();
-      });
-    std::exception_ptr callback_failure;
-    {
-      std::unique_lock<std::mutex> lock(mutex);
-      while(done < chain.size())
-      {
-        done_signal.wait_for(lock, std::chrono::milliseconds(200));
-        if(options.progress && !callback_failure)
-        {
-          lock.unlock();
-          try
-          {
-            options.progress({monitor.total(), count, 0});
-          }
-          catch(...)
-          {
-            callback_failure = std::current_exception();
-            monitor.abandon = true;
-          }
-          lock.lock();
-        }
-      }
-    }
-    for(std::thread& t : threads) t.join();
-    if(callback_failure) std::rethrow_exception(callback_failure);
-  }
-  for(const std::exception_ptr& f : failure)
-    if(f) std::rethrow_exception(f);
-
-  // Merge the chains; the pairs a chain carried beyond its limit are the next one's.
-  Ritz_set found;
-  int applications = 0, basis_used = 0;
-  for(Chain& ch : chain)
-  {
-    for(Ritz_pair& pair : ch.found)
-      if(pair.value <= ch.limit) found.push_back(std::move(pair));
-      else ch.store.release(pair.data); // the next chain's
-    ch.found.clear();
-    applications += ch.applications;
-    basis_used = std::max(basis_used, ch.basis_used);
-  }
-  for(double split : splits) join_at(p, split, options.tolerance, found);
-
-  // Sort, keep the lowest `count`.  Every pair met its tolerance on its true residual
-  // when its window (or the join) accepted it.
-  std::vector<int> order(found.size());
-  for(std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return found[a].value < found[b].value; });
-  if(static_cast<int>(order.size()) < count)
-    throw Numerical_failure("spectrum slicing: the chains found " + std::to_string(order.size()) + " of " +
-                            std::to_string(count) + " eigenpairs");
-  // The peak memory is one copy of the basis (and a block of vectors per chain), not two:
-  // the vectors not returned are given back first, the others as they are copied.
-  auto release = [&](const Ritz_pair& pair) {
-    for(Chain& ch : chain)
-      if(ch.store.release(pair.data)) return;
-  };
-  for(std::size_t i = static_cast<std::size_t>(count); i < order.size(); ++i) release(found[order[i]]);
-  Eigenpairs result;
-  result.values.resize(count);
-  result.residuals.resize(count);
-  resize_in_huge_pages(result.vectors, n, count);
-  for(int i = 0; i < count; ++i)
-  {
-    Ritz_pair& pair = found[order[i]];
-    if(!(pair.residual <= pair.tolerance))
-    {
-      std::ostringstream message;
-      message << "spectrum slicing: an eigenpair misses the tolerance (residual " << pair.residual << " > "
-              << pair.tolerance << ")";
-      throw Numerical_failure(message.str());
-    }
-    result.values[i] = pair.value;
-    result.residuals[i] = pair.residual;
-    result.vectors.col(i) = p.inv_sqrt_d.cwiseProduct(pair.vector());
-    release(pair);
-  }
-  result.basis_size = basis_used;
-  result.operator_applications = applications;
-  const Chain& last = chain.back();
-  result.completeness.shift = last.end;
-  result.completeness.inertia = last.below_end;
-  result.completeness.expected = c + static_cast<int>(found.size());
-  result.complete_below = static_cast<int>(found.size()) > count ? found[order[count]].value : last.end;
-  return result;
 }
 
 } // namespace internal

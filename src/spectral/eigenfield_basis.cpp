@@ -18,6 +18,8 @@
 #include <cstring>
 #include <fstream>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 namespace CGAL {
 namespace Tangent_vector_fields {
@@ -38,25 +40,37 @@ struct Solved
   double max_residual = 0;
   double complete_below = std::numeric_limits<double>::infinity(); // of the mesh as given
   Completeness_check check;
+  double thread_seconds = 0;
 };
 
-Solved solve(const Scalar_problem& p, int count, const Basis_options& options, const std::string& stage,
-             double progress_start, double progress_span)
+// The `count` lowest pairs of each problem, solved together: the windows of both
+// problems share the eigensolver's threads.
+std::vector<Solved> solve(const std::vector<std::pair<const Scalar_problem*, int>>& problems, const Basis_options& options,
+                          double progress_start, double progress_span)
 {
   Eigensolver_options eigen_options = internal::eigensolver_options(options);
   if(options.progress)
     eigen_options.progress = [&](const Eigensolver_progress& e) {
       const double f = e.wanted > 0 ? std::min(1., double(e.converged) / e.wanted) : 1.;
-      options.progress({stage, progress_start + progress_span * f});
+      options.progress({"eigenfunctions", progress_start + progress_span * f});
     };
-  Eigenpairs pairs = lowest_eigenpairs(p.A, p.d, count, p.kernel, eigen_options);
-  Solved s;
-  s.values = pairs.values / p.area;
-  s.functions = p.expand(std::move(pairs.vectors), 1 / std::sqrt(p.area));
-  s.max_residual = pairs.residuals.size() ? pairs.residuals.maxCoeff() : 0.;
-  s.complete_below = pairs.complete_below / p.area;
-  s.check = pairs.completeness;
-  return s;
+  std::vector<Eigenproblem_request> requests;
+  for(const auto& problem : problems)
+    requests.push_back({problem.first->A, problem.first->d, problem.second, problem.first->kernel});
+  std::vector<Eigenpairs> pairs = lowest_eigenpairs_of_each(requests, eigen_options);
+  std::vector<Solved> solved(problems.size());
+  for(std::size_t i = 0; i < problems.size(); ++i)
+  {
+    const Scalar_problem& p = *problems[i].first;
+    Solved& s = solved[i];
+    s.values = pairs[i].values / p.area;
+    s.functions = p.expand(std::move(pairs[i].vectors), 1 / std::sqrt(p.area));
+    s.max_residual = pairs[i].residuals.size() ? pairs[i].residuals.maxCoeff() : 0.;
+    s.complete_below = pairs[i].complete_below / p.area;
+    s.check = pairs[i].completeness;
+    s.thread_seconds = pairs[i].thread_seconds;
+  }
+  return solved;
 }
 
 // Eigenvalues of A x = lambda D x (outside the kernel) below tau.
@@ -142,23 +156,33 @@ Eigenfield_basis::Eigenfield_basis(std::shared_ptr<const Hodge_solver> solver, c
   // Solve both problems; in `lowest` mode enlarge one whose margin turned out too small.
   Solved exact_solved, coexact_solved;
   int exact_done = -1, coexact_done = -1;
-  const double exact_share = double(exact_count) / std::max(1, exact_count + coexact_count);
   for(int round = 0;; ++round)
   {
-    if(exact_count != exact_done)
+    // Both problems (or the one whose count changed) at once; the wall time is shared
+    // out in proportion to the thread time each took.
+    std::vector<std::pair<const Scalar_problem*, int>> problems;
+    if(exact_count != exact_done) problems.push_back({&exact, exact_count});
+    if(coexact_count != coexact_done) problems.push_back({&coexact, coexact_count});
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<Solved> solved = solve(problems, options, round == 0 ? 0. : 0.9, round == 0 ? 0.9 : 0.05);
+    const double seconds = seconds_since(start);
+    double thread_seconds = 0;
+    for(const Solved& s : solved) thread_seconds += s.thread_seconds;
+    for(std::size_t i = 0; i < problems.size(); ++i)
     {
-      const auto start = std::chrono::steady_clock::now();
-      exact_solved = solve(exact, exact_count, options, "exact eigenfunctions", 0, 0.95 * exact_share);
-      exact_done = exact_count;
-      report_.exact_seconds += seconds_since(start);
-    }
-    if(coexact_count != coexact_done)
-    {
-      const auto start = std::chrono::steady_clock::now();
-      coexact_solved = solve(coexact, coexact_count, options, "coexact eigenfunctions", 0.95 * exact_share,
-                             0.95 * (1 - exact_share));
-      coexact_done = coexact_count;
-      report_.coexact_seconds += seconds_since(start);
+      const double share = thread_seconds > 0 ? solved[i].thread_seconds / thread_seconds : 1. / problems.size();
+      if(problems[i].first == &exact)
+      {
+        exact_solved = std::move(solved[i]);
+        exact_done = exact_count;
+        report_.exact_seconds += share * seconds;
+      }
+      else
+      {
+        coexact_solved = std::move(solved[i]);
+        coexact_done = coexact_count;
+        report_.coexact_seconds += share * seconds;
+      }
     }
     if(request.mode != Basis_request::Mode::lowest) break;
     // The `rest` lowest of the union are right if no uncomputed eigenvalue of either

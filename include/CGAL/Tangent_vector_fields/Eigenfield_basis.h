@@ -75,7 +75,7 @@ struct Basis_request
 /// Reported while a basis is computed.
 struct Spectral_progress
 {
-  std::string stage;     ///< "exact eigenfunctions", "coexact eigenfunctions", "harmonic fields", "completeness check"
+  std::string stage;     ///< "counting eigenvalues", "eigenfunctions" (both problems at once), "harmonic fields", "done"
   double fraction = 0;   ///< overall progress estimate in [0, 1]
 };
 
@@ -100,6 +100,9 @@ struct Basis_report
   double coexact_complete_below = 0;
   int exact_inertia = 0, exact_expected = 0;     ///< completeness check of the exact problem
   int coexact_inertia = 0, coexact_expected = 0; ///< and of the coexact one
+  /// Wall time of each part.  The exact and coexact problems are solved together on the
+  /// eigensolver's threads; their joint time is shared out in proportion to the thread
+  /// time each took, so that the parts add up to the whole.
   double exact_seconds = 0, coexact_seconds = 0, harmonic_seconds = 0;
 };
 

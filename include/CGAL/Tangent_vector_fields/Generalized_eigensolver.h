@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace CGAL {
 namespace Tangent_vector_fields {
@@ -82,6 +83,9 @@ struct Eigenpairs
   Eigen::VectorXd residuals;    ///< relative residual of each pair
   int basis_size = 0;           ///< Krylov vectors used
   int operator_applications = 0; ///< columns passed through the shift-invert solve
+  /// Time the solver's threads spent on this problem, summed over the threads (with
+  /// `lowest_eigenpairs_of_each`, the share of the joint run that was this problem's).
+  double thread_seconds = 0;
   /// Every eigenvalue that was not returned is at least this (infinity when the whole
   /// space was returned).  Established by the completeness check when it ran.
   double complete_below = 0;
@@ -95,6 +99,25 @@ struct Eigenpairs
 ///         retry with wider blocks) or its pairs disagree with the inertia count.
 Eigenpairs lowest_eigenpairs(const Eigen::SparseMatrix<double>& A, const Eigen::VectorXd& D, int count,
                              const Eigen::MatrixXd& kernel, const Eigensolver_options& options = {});
+
+/// One eigenproblem of `lowest_eigenpairs_of_each`: `A x = lambda D x` outside `kernel`,
+/// its `count` lowest pairs.
+struct Eigenproblem_request
+{
+  const Eigen::SparseMatrix<double>& A;
+  const Eigen::VectorXd& D;
+  int count;
+  const Eigen::MatrixXd& kernel;
+};
+
+/// `lowest_eigenpairs` of several problems at once: the windows of all of them are queued
+/// for one pool of threads (`options.threads`), so that a thread that finishes its part of
+/// one problem works on another's instead of waiting.  The same pairs, to the same
+/// tolerance and with the same completeness check, as one call per problem; progress is
+/// reported over all of them.
+/// \throws Invalid_input for a bad request (checked before any work), as `lowest_eigenpairs`.
+std::vector<Eigenpairs> lowest_eigenpairs_of_each(const std::vector<Eigenproblem_request>& problems,
+                                                  const Eigensolver_options& options = {});
 
 /// Checks that `values` (ascending, computed eigenvalues of `A x = lambda D x` outside a
 /// kernel of dimension `kernel_dimension`, starting at the lowest) contain every

@@ -14,6 +14,8 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include <vector>
+
 namespace CGAL {
 namespace Tangent_vector_fields {
 namespace internal {
@@ -72,6 +74,17 @@ struct Standard_eigenproblem
 /// The `count` lowest pairs by spectrum slicing (`Generalized_eigensolver.h`), in one
 /// chain of windows or, on large requests, in several chains run at once.
 Eigenpairs sliced_eigenpairs(const Standard_eigenproblem& p, int count, const Eigensolver_options& options);
+
+/// One problem of a joint solve.
+struct Sliced_request
+{
+  const Standard_eigenproblem& problem;
+  int count;
+};
+
+/// `sliced_eigenpairs` of each request, the chains of all of them on one pool of threads.
+std::vector<Eigenpairs> sliced_eigenpairs(const std::vector<Sliced_request>& requests,
+                                          const Eigensolver_options& options);
 
 } // namespace internal
 } // namespace Tangent_vector_fields

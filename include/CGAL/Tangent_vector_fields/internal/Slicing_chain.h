@@ -1,0 +1,88 @@
+// Copyright (c) 2026 The Tangent_vector_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TANGENT_VECTOR_FIELDS_INTERNAL_SLICING_CHAIN_H
+#define CGAL_TANGENT_VECTOR_FIELDS_INTERNAL_SLICING_CHAIN_H
+
+/// \file Slicing_chain.h
+/// A chain of spectrum-slicing windows: consecutive windows of one eigenproblem, each
+/// locking out its neighbour's vectors and carrying the pairs it found beyond its end into
+/// the next.  A request is cut at inertia-counted split points into chains that run at once.
+
+#include <CGAL/Tangent_vector_fields/Sparse_ldlt_solver.h>
+#include <CGAL/Tangent_vector_fields/internal/Lanczos_window.h>
+#include <CGAL/Tangent_vector_fields/internal/Standard_eigenproblem.h>
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Tangent_vector_fields {
+namespace internal {
+
+/// Thrown inside a chain when another one failed: its own work is of no use any more.
+struct Abandoned
+{
+};
+
+/// What the chains share while they run: converged counts for the progress report, and a
+/// flag that stops every chain once one has failed.
+struct Chain_monitor
+{
+  std::vector<std::atomic<int>> converged; ///< per chain, over all the problems of a solve
+  std::atomic<bool> abandon{false};
+  std::function<void()> report; ///< set when the chains run on the caller's thread
+  explicit Chain_monitor(std::size_t chains) : converged(chains) {}
+  int total() const
+  {
+    int t = 0;
+    for(const auto& c : converged) t += c.load();
+    return t;
+  }
+};
+
+/// A chain of windows: from `lo` (with `below_lo` eigenvalues, kernel included, at or below
+/// it) either up to `limit`, whose inertia `below_limit` is known, or -- with an infinite
+/// limit -- until `count` pairs above `lo` are found.
+struct Chain
+{
+  double lo = 0;
+  int below_lo = 0;
+  int count = 0;
+  double limit = std::numeric_limits<double>::infinity();
+  int below_limit = 0;
+  double density = 1; ///< estimated eigenvalues per unit of lambda
+  std::uint64_t seed = 1;
+  // Results.
+  Vector_store store; ///< the vectors of `found`
+  Ritz_set found;
+  double end = 0;    ///< every eigenvalue in (lo, end] is in `found`
+  int below_end = 0; ///< inertia at `end`
+  int applications = 0, basis_used = 0;
+  double seconds = 0; ///< thread time the chain took
+};
+
+/// Runs `chain` of problem `p` (`analysis`: the fill-reducing analysis of its `A`), reporting
+/// its converged count as `monitor.converged[index]`.
+/// \throws Abandoned once `monitor.abandon` is set, Numerical_failure.
+void run_chain(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysis, Chain& chain,
+               const Eigensolver_options& options, Chain_monitor& monitor, int index);
+
+/// A shift with about `target` eigenvalues (kernel excluded) below it, counted exactly by the
+/// inertia; returns that count.  Starts from `density` (eigenvalues per unit of lambda) and
+/// updates it from the counts found.
+int split_point(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysis, int target, double& density,
+                double& split);
+
+/// Rayleigh-Ritz on the pairs near `split`, found by two chains that did not lock each other's
+/// vectors out: makes them orthonormal again.
+void join_at(const Standard_eigenproblem& p, double split, double tolerance, Ritz_set& pairs);
+
+} // namespace internal
+} // namespace Tangent_vector_fields
+} // namespace CGAL
+
+#endif
