@@ -1,0 +1,343 @@
+// Copyright (c) 2026 The Tangent_vector_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+// The generalized eigensolver behind the spectral basis (SPEC 5): analytic spectra,
+// agreement with dense solves, residuals, orthonormality, and the inertia count
+// that proves no eigenvalue was skipped; several problems solved in one call.
+
+#include "test_meshes.h"
+
+#include <CGAL/Tangent_vector_fields/Discrete_operators.h>
+#include <CGAL/Tangent_vector_fields/Generalized_eigensolver.h>
+
+#include <Eigen/Dense>
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace TVF = CGAL::Tangent_vector_fields;
+using namespace tvf_test;
+
+namespace {
+
+struct Vertex_problem
+{
+  Eigen::SparseMatrix<double> A;
+  Eigen::VectorXd d;
+  Eigen::MatrixXd kernel;
+};
+
+Vertex_problem vertex_problem(const Mesh& mesh)
+{
+  TVF::Discrete_operators<Mesh> ops(mesh);
+  return {ops.matrices().W(), ops.matrices().vertex_masses(), Eigen::MatrixXd::Ones(mesh.number_of_vertices(), 1)};
+}
+
+Vertex_problem edge_problem(const Mesh& mesh)
+{
+  TVF::Discrete_operators<Mesh> ops(mesh);
+  const auto& A = ops.matrices();
+  Eigen::MatrixXd kernel(A.mesh().number_of_interior_edges(), 0);
+  if(ops.topology().number_of_boundary_loops() == 0) kernel = Eigen::MatrixXd::Ones(kernel.rows(), 1);
+  return {A.W_star(), A.all_to_interior_edges(A.edge_masses()), kernel};
+}
+
+void expect_orthonormal(const Eigen::MatrixXd& X, const Eigen::VectorXd& d)
+{
+  const Eigen::MatrixXd K = X.transpose() * d.asDiagonal() * X;
+  EXPECT_LT((K - Eigen::MatrixXd::Identity(X.cols(), X.cols())).cwiseAbs().maxCoeff(), 1e-10);
+}
+
+} // namespace
+
+TEST(Eigensolver, SphereSpectrumIsLTimesLPlusOneWithMultiplicity)
+{
+  // Scalar eigenvalues of the unit sphere are l(l+1) with multiplicity 2l+1.  On
+  // icospheres with 642 and 2562 vertices (iterative path) the cotan discretisation
+  // error for l <= 6 is below 6% and 1.5% (measured 4.9% and 1.2% at l = 6) and
+  // shrinks about 4x per refinement (O(h^2)).
+  const int count = 48; // l = 1 .. 6
+  std::vector<Eigen::VectorXd> errors;
+  for(int level : {3, 4})
+  {
+    SCOPED_TRACE(level);
+    Mesh sphere = make_icosphere(level);
+    const Vertex_problem p = vertex_problem(sphere);
+    TVF::Eigensolver_options options;
+    options.allow_dense = false;
+    const TVF::Eigenpairs e = TVF::lowest_eigenpairs(p.A, p.d, count, p.kernel, options);
+    ASSERT_EQ(e.values.size(), count);
+    Eigen::VectorXd error(6);
+    int i = 0;
+    for(int l = 1; l <= 6; ++l)
+    {
+      const double exact = l * (l + 1);
+      // The 2l+1 copies agree much better than the discretisation error (symmetry).
+      const double lo = e.values[i], hi = e.values[i + 2 * l];
+      error[l - 1] = std::abs(0.5 * (lo + hi) - exact) / exact;
+      EXPECT_LT(error[l - 1], level == 3 ? 6e-2 : 1.5e-2) << "l = " << l;
+      if(i + 2 * l + 1 < count) EXPECT_GT(e.values[i + 2 * l + 1] - hi, 10 * (hi - lo)) << "l = " << l;
+      i += 2 * l + 1;
+    }
+    EXPECT_LE(e.residuals.maxCoeff(), 1e-10);
+    expect_orthonormal(e.vectors, p.d);
+    // Sylvester: count + 1 (with the constant) eigenvalues below the gap before l = 7.
+    EXPECT_EQ(TVF::count_eigenvalues_below(p.A, p.d, 0.5 * (42 + 56)), count + 1);
+    errors.push_back(error);
+  }
+  for(int l = 1; l <= 6; ++l) EXPECT_LT(errors[1][l - 1], 0.35 * errors[0][l - 1]) << "l = " << l;
+}
+
+TEST(Eigensolver, IterativeAgreesWithDenseOnVertexAndEdgeProblems)
+{
+  Mesh torus = make_torus(30, 14); // 420 vertices, 1260 edges; genus 1
+  Mesh disk = make_curved_disk(12); // with boundary: no kernel for the edge problem
+  for(const Mesh* mesh : {&torus, &disk})
+    for(int kind = 0; kind < 2; ++kind)
+    {
+      SCOPED_TRACE(kind == 0 ? "vertex" : "edge");
+      const Vertex_problem p = kind == 0 ? vertex_problem(*mesh) : edge_problem(*mesh);
+      const int count = 60;
+      TVF::Eigensolver_options iterative;
+      iterative.allow_dense = false;
+      iterative.block_size = 8;
+      const TVF::Eigenpairs a = TVF::lowest_eigenpairs(p.A, p.d, count, p.kernel, iterative);
+      const TVF::Eigenpairs b = TVF::lowest_eigenpairs(p.A, p.d, count, p.kernel);
+      EXPECT_LT(((a.values - b.values).array() / b.values.array()).abs().maxCoeff(), 1e-9);
+      EXPECT_LE(a.residuals.maxCoeff(), 1e-10);
+      EXPECT_LE(b.residuals.maxCoeff(), 1e-10);
+      expect_orthonormal(a.vectors, p.d);
+      expect_orthonormal(b.vectors, p.d);
+      // Orthogonal to the kernel.
+      if(p.kernel.cols() > 0) EXPECT_LT((p.kernel.transpose() * p.d.asDiagonal() * a.vectors).norm(), 1e-9);
+    }
+}
+
+TEST(Eigensolver, InertiaCountMatchesTheComputedSpectrum)
+{
+  // Jittered sphere: no exact multiplicities, so every consecutive pair has a gap.
+  Mesh sphere = make_icosphere(3);
+  jitter_vertices(sphere, 0.1, 3);
+  const Vertex_problem p = vertex_problem(sphere);
+  const TVF::Eigenpairs e = TVF::lowest_eigenpairs(p.A, p.d, 40, p.kernel);
+  for(int k : {1, 10, 25, 39})
+  {
+    const double tau = 0.5 * (e.values[k - 1] + e.values[k]);
+    // k computed eigenvalues below tau, plus the constant.
+    EXPECT_EQ(TVF::count_eigenvalues_below(p.A, p.d, tau), k + 1) << "k = " << k;
+  }
+}
+
+TEST(Eigensolver, SpectrumSlicingAgreesWithDenseAcrossManyWindows)
+{
+  // Windows of ~30 eigenvalues, blocks of 4: the perfect icosphere has exact
+  // multiplicities up to 5 (icosahedral symmetry), more than a block finds at once,
+  // so the retry with wider blocks is exercised; the jittered one has none.
+  Mesh sphere = make_icosphere(3);
+  Mesh jittered = make_icosphere(3);
+  jitter_vertices(jittered, 0.1, 5);
+  // One chain of windows, and the spectrum cut into 2 and 3 chains solved at once (the
+  // pairs on both sides of a cut come from different runs: orthonormality is checked).
+  for(const Mesh* mesh : {&sphere, &jittered})
+    for(int kind = 0; kind < 2; ++kind)
+    {
+      const Vertex_problem p = kind == 0 ? vertex_problem(*mesh) : edge_problem(*mesh);
+      const int count = 150;
+      TVF::Eigensolver_options dense;
+      dense.dense_size = 4000; // an exact reference
+      const TVF::Eigenpairs b = TVF::lowest_eigenpairs(p.A, p.d, count, p.kernel, dense);
+      for(int threads : {1, 2, 3})
+      {
+        SCOPED_TRACE(std::string(mesh == &sphere ? "sphere " : "jittered ") + (kind == 0 ? "vertex" : "edge") +
+                     ", threads " + std::to_string(threads));
+        TVF::Eigensolver_options sliced;
+        sliced.allow_dense = false;
+        sliced.slice_size = 30;
+        sliced.threads = threads;
+        const TVF::Eigenpairs a = TVF::lowest_eigenpairs(p.A, p.d, count, p.kernel, sliced);
+        ASSERT_EQ(a.values.size(), count);
+        EXPECT_LT(((a.values - b.values).array() / b.values.array()).abs().maxCoeff(), 1e-9);
+        EXPECT_LE(a.residuals.maxCoeff(), 1e-10);
+        expect_orthonormal(a.vectors, p.d);
+        EXPECT_TRUE(a.completeness.passed());
+        EXPECT_GE(a.completeness.expected - static_cast<int>(p.kernel.cols()), count);
+        EXPECT_GT(a.complete_below, a.values[count - 1] * (1 - 1e-12));
+      }
+    }
+}
+
+TEST(Eigensolver, SlicingReachesTheToleranceWhereSomeMassesAreTiny)
+{
+  // A sphere and a second one 1e-3 as large: masses 1e6 below the others, so the standard
+  // form's rows there are 1e6 larger.  Roundoff of the size a random start block leaves on
+  // every entry kept the true residuals of the Lanczos pairs above 1e-10 however long the
+  // basis grew (the same happened on needle triangles: CGAL's camel.off).  Checked against
+  // dense LAPACK, with each pair's residual computed here.
+  Mesh mesh = make_icosphere(3);
+  Mesh small = make_icosphere(2);
+  transform(small, 1e-3, {1, 0, 0, 0, 1, 0, 0, 0, 1}, Vector_3(3, 0, 0));
+  mesh.join(small);
+  Vertex_problem p = vertex_problem(mesh);
+  p.kernel.setZero(p.A.rows(), 2); // the constants of each component
+  for(Eigen::Index i = 0; i < p.A.rows(); ++i) p.kernel(i, i < 642 ? 0 : 1) = 1;
+  const int count = 40;
+  TVF::Eigensolver_options dense;
+  dense.dense_size = 4000;
+  const TVF::Eigenpairs b = TVF::lowest_eigenpairs(p.A, p.d, count, p.kernel, dense);
+  TVF::Eigensolver_options sliced;
+  sliced.allow_dense = false;
+  sliced.slice_size = 20;
+  const TVF::Eigenpairs a = TVF::lowest_eigenpairs(p.A, p.d, count, p.kernel, sliced);
+  ASSERT_EQ(a.values.size(), count);
+  EXPECT_LT(((a.values - b.values).array() / b.values.array()).abs().maxCoeff(), 1e-9);
+  for(int i = 0; i < count; ++i)
+  {
+    const Eigen::VectorXd x = a.vectors.col(i);
+    const Eigen::VectorXd r = (p.A * x - a.values[i] * p.d.cwiseProduct(x)).cwiseQuotient(p.d.cwiseSqrt());
+    EXPECT_LE(r.norm() / (a.values[i] * p.d.cwiseSqrt().cwiseProduct(x).norm()), 1e-10) << "pair " << i;
+  }
+  expect_orthonormal(a.vectors, p.d);
+}
+
+TEST(Eigensolver, ChainsReportProgressOnTheCallersThreadAndStopOnACancel)
+{
+  Mesh sphere = make_icosphere(3);
+  jitter_vertices(sphere, 0.1, 7);
+  const Vertex_problem p = vertex_problem(sphere);
+  TVF::Eigensolver_options options;
+  options.allow_dense = false;
+  options.slice_size = 30;
+  options.threads = 2;
+  const std::thread::id caller = std::this_thread::get_id();
+  int calls = 0, last = 0;
+  bool other_thread = false;
+  options.progress = [&](const TVF::Eigensolver_progress& e) {
+    ++calls;
+    other_thread = other_thread || std::this_thread::get_id() != caller;
+    last = e.converged;
+    EXPECT_LE(e.converged, e.wanted);
+  };
+  const TVF::Eigenpairs e = TVF::lowest_eigenpairs(p.A, p.d, 150, p.kernel, options);
+  EXPECT_GT(calls, 0);
+  EXPECT_EQ(last, 150); // the last report says every pair was found
+  EXPECT_FALSE(other_thread);
+  EXPECT_EQ(e.values.size(), 150);
+  // A callback that throws cancels both chains; its exception reaches the caller.
+  struct Cancelled
+  {
+  };
+  options.progress = [&](const TVF::Eigensolver_progress&) { throw Cancelled(); };
+  EXPECT_THROW(TVF::lowest_eigenpairs(p.A, p.d, 150, p.kernel, options), Cancelled);
+}
+
+TEST(Eigensolver, ProblemsSolvedTogetherEachMeetTheirSpectrum)
+{
+  // One call, one pool of threads: a sphere's vertex problem (analytic spectrum, exact
+  // multiplicities), a jittered sphere's edge problem (sliced), a small torus (the dense
+  // path) and an empty request.  Each against its own truth: l(l+1) with multiplicity
+  // 2l+1 on the sphere, a dense solve of the same matrices for the others.
+  Mesh sphere = make_icosphere(4); // 2562 vertices
+  Mesh jittered = make_icosphere(3);
+  jitter_vertices(jittered, 0.1, 11);
+  Mesh torus = make_torus(8, 5);
+  const Vertex_problem a = vertex_problem(sphere), b = edge_problem(jittered), c = vertex_problem(torus);
+  const int count_a = 48, count_b = 150, count_c = 12; // l = 1 .. 6 on the sphere
+  TVF::Eigensolver_options options;
+  options.slice_size = 30;
+  options.threads = 2;
+  int calls = 0, last = 0, wanted = 0;
+  options.progress = [&](const TVF::Eigensolver_progress& e) {
+    ++calls;
+    last = e.converged;
+    wanted = e.wanted;
+  };
+  const std::vector<TVF::Eigenpairs> result = TVF::lowest_eigenpairs_of_each(
+      {{a.A, a.d, count_a, a.kernel}, {b.A, b.d, count_b, b.kernel}, {c.A, c.d, count_c, c.kernel}, {c.A, c.d, 0, c.kernel}},
+      options);
+  ASSERT_EQ(result.size(), 4u);
+  EXPECT_GT(calls, 0);
+  EXPECT_EQ(wanted, count_a + count_b); // the sliced ones
+  EXPECT_EQ(last, wanted);
+
+  const TVF::Eigenpairs& s = result[0];
+  ASSERT_EQ(s.values.size(), count_a);
+  for(int l = 1, i = 0; l <= 6; i += 2 * l + 1, ++l)
+  {
+    // Discretisation error below 1.5% at this level (see the test above); the 2l+1 copies
+    // far closer to each other than to the next eigenvalue.
+    const double exact = l * (l + 1), lo = s.values[i], hi = s.values[i + 2 * l];
+    EXPECT_LT(std::abs(0.5 * (lo + hi) - exact) / exact, 1.5e-2) << "l = " << l;
+    if(i + 2 * l + 1 < count_a) EXPECT_GT(s.values[i + 2 * l + 1] - hi, 10 * (hi - lo)) << "l = " << l;
+  }
+  const Vertex_problem* problem[] = {&a, &b, &c};
+  const int count[] = {count_a, count_b, count_c};
+  for(int k = 0; k < 3; ++k)
+  {
+    SCOPED_TRACE("problem " + std::to_string(k));
+    const Vertex_problem& p = *problem[k];
+    const TVF::Eigenpairs& e = result[static_cast<std::size_t>(k)];
+    TVF::Eigensolver_options dense;
+    dense.dense_size = 4000;
+    const TVF::Eigenpairs reference = TVF::lowest_eigenpairs(p.A, p.d, count[k], p.kernel, dense);
+    ASSERT_EQ(e.values.size(), count[k]);
+    EXPECT_LT(((e.values - reference.values).array() / reference.values.array()).abs().maxCoeff(), 1e-9);
+    EXPECT_LE(e.residuals.maxCoeff(), 1e-10);
+    expect_orthonormal(e.vectors, p.d);
+    EXPECT_TRUE(e.completeness.passed());
+    if(k < 2) EXPECT_GT(e.thread_seconds, 0.); // sliced on the pool
+  }
+  EXPECT_EQ(result[3].values.size(), 0);
+  EXPECT_EQ(result[3].vectors.rows(), c.A.rows());
+
+  // A bad request anywhere is refused, with its reason, before any work is done.
+  calls = 0;
+  try
+  {
+    TVF::lowest_eigenpairs_of_each({{a.A, a.d, count_a, a.kernel}, {c.A, c.d, 40, c.kernel}}, options);
+    ADD_FAILURE() << "a request beyond the space's dimension was accepted";
+  }
+  catch(const TVF::Invalid_input& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("asked for 40 eigenpairs but the space has dimension 39"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(calls, 0);
+}
+
+TEST(Eigensolver, RefusesImpossibleRequests)
+{
+  Mesh torus = make_torus(8, 5);
+  const Vertex_problem p = vertex_problem(torus);
+  EXPECT_THROW(TVF::lowest_eigenpairs(p.A, p.d, 40, p.kernel), TVF::Invalid_input); // space has dimension 39
+  EXPECT_NO_THROW(TVF::lowest_eigenpairs(p.A, p.d, 39, p.kernel));
+  EXPECT_THROW(TVF::lowest_eigenpairs(p.A, p.d, -1, p.kernel), TVF::Invalid_input);
+}
+
+TEST(SpectralBasis, CompletenessCheckCatchesAMissingEigenvalue)
+{
+  Mesh sphere = make_icosphere(3);
+  const Vertex_problem p = vertex_problem(sphere);
+  TVF::Eigensolver_options options;
+  options.allow_dense = false;
+  const TVF::Eigenpairs e = TVF::lowest_eigenpairs(p.A, p.d, 40, p.kernel, options);
+  EXPECT_TRUE(e.completeness.passed());
+  EXPECT_EQ(e.completeness.inertia, e.completeness.expected);
+  EXPECT_GT(e.complete_below, e.values[39]);
+  // The 40 values end inside the l = 6 cluster, whose icosahedral sub-multiplets are
+  // exact: the shift must go in a real gap (the widest among values 30 on, which is
+  // the one between l = 5 and l = 6).
+  EXPECT_TRUE(TVF::check_completeness(p.A, p.d, e.values, 1, 30).passed());
+  // What Spectra did on spheres: one copy of a repeated eigenvalue missing (l = 3).
+  Eigen::VectorXd truncated(39);
+  truncated << e.values.head(10), e.values.tail(29);
+  const TVF::Completeness_check check = TVF::check_completeness(p.A, p.d, truncated, 1, 30);
+  EXPECT_FALSE(check.passed());
+  EXPECT_EQ(check.inertia - check.expected, 1);
+  // The last copy of l = 5 skipped, the list going on with l = 6.
+  Eigen::VectorXd skipped(36);
+  skipped << e.values.head(34), e.values.segment(35, 2);
+  EXPECT_FALSE(TVF::check_completeness(p.A, p.d, skipped, 1, 30).passed());
+}
