@@ -3,7 +3,9 @@
 //
 // The discrete operators as property maps: the gradient of the height function,
 // its divergence (a discrete Laplacian of the height) and curl (zero), the rotated
-// gradient (divergence-free), and the masses that integrate them.
+// gradient (divergence-free), and the masses that integrate them.  Then the operators as
+// matrices: the lowest eigenvalues of the vertex Laplacian (W, M) and of the edge one
+// (W*, M*), both in one call of the eigensolver, checked by Sylvester's inertia count.
 //
 // Usage: discrete_operators_example [mesh]
 
@@ -12,9 +14,11 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <CGAL/Tangent_vector_fields/Discrete_operators.h>
+#include <CGAL/Tangent_vector_fields/Generalized_eigensolver.h>
 
 #include <cmath>
 #include <iostream>
+#include <vector>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
@@ -77,6 +81,41 @@ int main(int argc, char** argv)
     {
       std::cerr << "error: an identity failed\n";
       return 2;
+    }
+
+    // The kernels: the constants on the vertices, and on the interior edges when the
+    // surface is closed (with a boundary the edge problem has zero boundary values).
+    if(ops.topology().number_of_components() != 1)
+    {
+      std::cout << "  eigenvalues: skipped (the kernels below assume one connected component)\n";
+      return 0;
+    }
+    const TVF::Operator_matrices& m = ops.matrices();
+    const Eigen::VectorXd edge_masses = m.all_to_interior_edges(m.edge_masses());
+    const Eigen::MatrixXd vertex_kernel = Eigen::MatrixXd::Ones(m.W().rows(), 1);
+    const Eigen::MatrixXd edge_kernel = Eigen::MatrixXd::Ones(m.W_star().rows(), ops.topology().number_of_boundary_loops() == 0);
+    const int count = 20;
+    const std::vector<TVF::Eigenpairs> pairs = TVF::lowest_eigenpairs_of_each(
+        {{m.W(), m.vertex_masses(), count + 1, vertex_kernel}, {m.W_star(), edge_masses, count + 1, edge_kernel}});
+    const char* name[] = {"vertex (W, M)", "edge (W*, M*)"};
+    const Eigen::SparseMatrix<double>* A[] = {&m.W(), &m.W_star()};
+    const Eigen::VectorXd* D[] = {&m.vertex_masses(), &edge_masses};
+    const Eigen::Index kernel[] = {vertex_kernel.cols(), edge_kernel.cols()};
+    for(int k = 0; k < 2; ++k)
+    {
+      const TVF::Eigenpairs& e = pairs[k];
+      // Sylvester: exactly `count` eigenvalues (and the kernel) below a shift between the
+      // 20th and the 21st, counted by an LDL^T factorisation, independently of the solver.
+      const double shift = 0.5 * (e.values[count - 1] + e.values[count]);
+      const int below = TVF::count_eigenvalues_below(*A[k], *D[k], shift) - static_cast<int>(kernel[k]);
+      std::cout << "  lowest eigenvalues of the " << name[k] << " problem: " << e.values[0] << " .. "
+                << e.values[count - 1] << ", largest relative residual " << e.residuals.maxCoeff() << ", " << below
+                << " eigenvalues below " << shift << " (inertia)\n";
+      if(below != count || !(e.residuals.maxCoeff() <= 1e-10))
+      {
+        std::cerr << "error: the " << name[k] << " eigenpairs failed their check\n";
+        return 2;
+      }
     }
   }
   catch(const std::exception& e)

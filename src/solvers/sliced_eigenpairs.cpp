@@ -143,15 +143,13 @@ struct Slicing
 {
   const Standard_eigenproblem* p;
   int count;
-  int per_window;
-  int pieces = 1;          // chains wanted
-  double density = 1;      // Weyl's estimate, eigenvalues per unit of lambda
+  int pieces = 1;     // chains wanted
+  double density = 1; // Weyl's estimate, eigenvalues per unit of lambda
   Sparse_ldlt_solver analysis;
   std::vector<double> split, split_density;
   std::vector<int> split_below; // eigenvalues below each split (kernel excluded)
   std::vector<double> splits;   // those used, between consecutive chains
   std::vector<Chain> chains;
-  std::size_t first_chain = 0; // index of its first chain among all
 };
 
 // The chains of `s` from its split points: splits that do not raise the count (two
@@ -264,9 +262,9 @@ std::vector<Eigenpairs> sliced_eigenpairs(const std::vector<Sliced_request>& req
     Slicing& s = slicing[r];
     s.p = &requests[r].problem;
     s.count = requests[r].count;
-    s.per_window = std::max(options.block_size, options.slice_size);
     // A chain per core, each at least a window long.
-    s.pieces = static_cast<int>(std::min<unsigned>(cores, static_cast<unsigned>(std::max(1, s.count / s.per_window))));
+    const int per_window = std::max(options.block_size, options.slice_size);
+    s.pieces = static_cast<int>(std::min<unsigned>(cores, static_cast<unsigned>(std::max(1, s.count / per_window))));
     // Weyl's law on a surface of area |D|: about |D| lambda / (4 pi) eigenvalues below lambda.
     s.density = s.p->d.sum() / (4 * M_PI);
     wanted += s.count;
@@ -321,11 +319,6 @@ std::vector<Eigenpairs> sliced_eigenpairs(const std::vector<Sliced_request>& req
   std::vector<Eigenpairs> result;
   for(Slicing& s : slicing) result.push_back(merge(s, options.tolerance));
   return result;
-}
-
-Eigenpairs sliced_eigenpairs(const Standard_eigenproblem& p, int count, const Eigensolver_options& options)
-{
-  return std::move(sliced_eigenpairs({{p, count}}, options).front());
 }
 
 } // namespace internal

@@ -71,18 +71,16 @@ struct Standard_eigenproblem
   }
 };
 
-/// The `count` lowest pairs by spectrum slicing (`Generalized_eigensolver.h`), in one
-/// chain of windows or, on large requests, in several chains run at once.
-Eigenpairs sliced_eigenpairs(const Standard_eigenproblem& p, int count, const Eigensolver_options& options);
-
-/// One problem of a joint solve.
+/// One problem of a spectrum-slicing solve.
 struct Sliced_request
 {
   const Standard_eigenproblem& problem;
   int count;
 };
 
-/// `sliced_eigenpairs` of each request, the chains of all of them on one pool of threads.
+/// The `count` lowest pairs of each request by spectrum slicing (`Generalized_eigensolver.h`):
+/// each cut into chains of windows, one per core on large requests, and the chains of all
+/// the requests run on one pool of threads.
 std::vector<Eigenpairs> sliced_eigenpairs(const std::vector<Sliced_request>& requests,
                                           const Eigensolver_options& options);
 
