@@ -7,7 +7,11 @@
 // as it comes free.  With one problem cut into one chain per core, a chain that needed
 // more work (the lowest window, a rerun with refined solves) left the other core idle: on
 // the bunny's Crouzeix-Raviart problem one chain took 22.8 s and the other 17.9 s.  Solving
-// the basis's vertex and edge problems together in one queue fills that time.
+// the basis's vertex and edge problems together in one queue fills most of that time; what
+// is left is the end, when a thread finds the queue empty while another still has several
+// windows to run (bunny: 5 s of 27 with a vertex chain taken just before the other thread
+// finished).  That thread then takes over the top half of the range the busiest chain has
+// left (`take_over_top`), at the price of one factorisation for the inertia at the cut.
 //
 // Each thread runs with one BLAS thread: the sparse factorisations and solves are
 // sequential code, and the orthogonalisation is memory-bound products of a tall basis
@@ -25,6 +29,7 @@
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
+#include <deque>
 #include <exception>
 #include <functional>
 #include <mutex>
@@ -61,12 +66,13 @@ struct One_blas_thread
 };
 
 // Runs `tasks` on up to `threads` threads, each taking the next task in the list as it
-// comes free.  The caller's thread only waits and calls `report` (so the progress
-// callback is never called from another thread, and one that throws -- a cancel -- stops
-// all); with one thread or one task, the tasks run on the caller's thread and report
-// through `monitor.report` after every Rayleigh-Ritz step.  Rethrows the first failure.
+// comes free, and then what `more` gives it (none: the thread ends).  The caller's thread
+// only waits and calls `report` (so the progress callback is never called from another
+// thread, and one that throws -- a cancel -- stops all); with one thread or one task, the
+// tasks run on the caller's thread and report through `monitor.report` after every
+// Rayleigh-Ritz step.  Rethrows the first failure.
 void run_tasks(const std::vector<std::function<void()>>& tasks, unsigned threads, Chain_monitor& monitor,
-               const std::function<void()>& report)
+               const std::function<void()>& report, const std::function<std::function<void()>()>& more = nullptr)
 {
   std::exception_ptr failure;
   std::mutex mutex;
@@ -75,10 +81,11 @@ void run_tasks(const std::vector<std::function<void()>>& tasks, unsigned threads
     while(!monitor.abandon)
     {
       const std::size_t i = next++;
-      if(i >= tasks.size()) return;
       try
       {
-        tasks[i]();
+        if(i < tasks.size()) tasks[i]();
+        else if(const std::function<void()> task = more ? more() : nullptr) task();
+        else return;
       }
       catch(const Abandoned&)
       {
@@ -149,7 +156,7 @@ struct Slicing
   std::vector<double> split, split_density;
   std::vector<int> split_below; // eigenvalues below each split (kernel excluded)
   std::vector<double> splits;   // those used, between consecutive chains
-  std::vector<Chain> chains;
+  std::deque<Chain> chains; // a deque: a chain taken over is added while the others run
 };
 
 // The chains of `s` from its split points: splits that do not raise the count (two
@@ -157,7 +164,7 @@ struct Slicing
 void make_chains(Slicing& s, std::uint64_t seed)
 {
   const int c = static_cast<int>(s.p->kernel.cols());
-  s.chains.resize(1);
+  s.chains.emplace_back();
   s.chains[0].below_lo = c;
   s.chains[0].count = s.count;
   s.chains[0].seed = seed;
@@ -175,13 +182,12 @@ void make_chains(Slicing& s, std::uint64_t seed)
     last.limit = s.split[k];
     last.below_limit = below + c;
     last.count = below - previous;
-    Chain next;
+    Chain& next = s.chains.emplace_back();
     next.lo = s.split[k];
     next.below_lo = below + c;
     next.count = s.count - below;
     next.density = s.split_density[k];
     next.seed = seed + 0x9e3779b97f4a7c15ull * static_cast<std::uint64_t>(s.chains.size());
-    s.chains.push_back(std::move(next));
     s.splits.push_back(s.split[k]);
   }
 }
@@ -241,7 +247,8 @@ Eigenpairs merge(Slicing& s, double tolerance)
     result.vectors.col(i) = p.inv_sqrt_d.cwiseProduct(pair.vector());
     release(pair);
   }
-  const Chain& last = s.chains.back();
+  const Chain& last = *std::max_element(s.chains.begin(), s.chains.end(),
+                                        [](const Chain& a, const Chain& b) { return a.end < b.end; });
   result.completeness.shift = last.end;
   result.completeness.inertia = last.below_end;
   result.completeness.expected = c + static_cast<int>(found.size());
@@ -288,7 +295,7 @@ std::vector<Eigenpairs> sliced_eigenpairs(const std::vector<Sliced_request>& req
     for(std::size_t k = 0; k < s.split.size(); ++k)
       tasks.push_back([&s, k] {
         const int target = s.count * static_cast<int>(k + 1) / s.pieces;
-        s.split_below[k] = split_point(*s.p, s.analysis, target, s.split_density[k], s.split[k]);
+        s.split_below[k] = split_point(*s.p, s.analysis, target, target / 5, s.split_density[k], s.split[k]);
       });
   }
   run(tasks, idle, nullptr);
@@ -309,12 +316,64 @@ std::vector<Eigenpairs> sliced_eigenpairs(const std::vector<Sliced_request>& req
   }
   auto work = [](const Job& j) { return static_cast<double>(j.s->p->A.rows()) * j.chain->count; };
   std::stable_sort(jobs.begin(), jobs.end(), [&](const Job& a, const Job& b) { return work(a) > work(b); });
-  Chain_monitor monitor(jobs.size());
-  for(const Job& j : jobs)
-    tasks.push_back([&monitor, &options, j] { run_chain(*j.s->p, j.s->analysis, *j.chain, options, monitor, j.index); });
+  Chain_monitor monitor(jobs.size() + 4 * cores); // and slots for chains taken over
+  auto run_job = [&monitor, &options](const Job& j) {
+    Chain& chain = *j.chain;
+    {
+      std::lock_guard<std::mutex> lock(chain.mutex);
+      chain.running = true;
+      chain.working_hi = chain.lo;
+      chain.below_working_hi = chain.below_lo;
+    }
+    struct Stopped
+    {
+      Chain& chain;
+      ~Stopped()
+      {
+        std::lock_guard<std::mutex> lock(chain.mutex);
+        chain.running = false;
+      }
+    } stopped{chain};
+    run_chain(*j.s->p, j.s->analysis, chain, options, monitor, j.index);
+  };
+  for(const Job& j : jobs) tasks.push_back([&run_job, j] { run_job(j); });
+  // Once the queue is empty: the top of the running chain with the most work left (unknowns
+  // times pairs), one thread at a time.
+  std::mutex take_over_mutex; // guards `jobs` and the chains and splits added
+  const int per_window = std::max(options.block_size, options.slice_size);
+  auto take_over = [&]() -> std::function<void()> {
+    std::lock_guard<std::mutex> lock(take_over_mutex);
+    if(jobs.size() >= monitor.converged.size()) return nullptr;
+    Job victim{nullptr, nullptr, 0};
+    double most = 0;
+    for(const Job& j : jobs)
+    {
+      std::lock_guard<std::mutex> chain_lock(j.chain->mutex);
+      const double left = static_cast<double>(j.s->p->A.rows()) * (j.chain->below_end_wanted() - j.chain->below_working_hi);
+      if(j.chain->running && left > most)
+      {
+        most = left;
+        victim = j;
+      }
+    }
+    if(!victim.s) return nullptr;
+    Slicing& s = *victim.s;
+    Chain& taken = s.chains.emplace_back();
+    taken.seed = victim.chain->seed + 0x9e3779b97f4a7c15ull * static_cast<std::uint64_t>(s.chains.size());
+    const double split = take_over_top(*s.p, s.analysis, *victim.chain, per_window, taken);
+    if(std::isnan(split))
+    {
+      s.chains.pop_back();
+      return nullptr;
+    }
+    s.splits.push_back(split);
+    jobs.push_back({&s, &taken, static_cast<int>(jobs.size())});
+    return [&run_job, j = jobs.back()] { run_job(j); };
+  };
   std::function<void()> report;
   if(options.progress) report = [&] { options.progress({std::min(monitor.total(), wanted), wanted, 0}); };
-  run(tasks, monitor, report);
+  run_tasks(tasks, cores, monitor, report, take_over);
+  tasks.clear();
 
   std::vector<Eigenpairs> result;
   for(Slicing& s : slicing) result.push_back(merge(s, options.tolerance));

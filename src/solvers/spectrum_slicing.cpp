@@ -24,6 +24,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <random>
 #include <string>
 #include <vector>
@@ -66,7 +67,6 @@ void run_chain(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysi
   const int c = static_cast<int>(p.kernel.cols());
   const double total_mass = p.d.sum();
   const int per_window = std::max(options.block_size, options.slice_size);
-  const bool bounded = chain.limit < std::numeric_limits<double>::infinity();
   double density = chain.density;
   Shifted_factor shifted(p, analysis);
   Lanczos_workspace space;
@@ -75,16 +75,27 @@ void run_chain(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysi
   Ritz_set carry;
   double lo = chain.lo;
   int below_lo = chain.below_lo;
-  while(static_cast<int>(found.size()) < chain.count)
+  while(true)
   {
     if(monitor.abandon) throw Abandoned();
-    const int remaining = chain.count - static_cast<int>(found.size());
+    // The end, which another thread may have lowered since the last window.
+    double limit = 0;
+    int below_limit = 0, count = 0;
+    {
+      std::lock_guard<std::mutex> lock(chain.mutex);
+      limit = chain.limit;
+      below_limit = chain.below_limit;
+      count = chain.count;
+    }
+    if(static_cast<int>(found.size()) >= count) break;
+    const bool bounded = limit < std::numeric_limits<double>::infinity();
+    const int remaining = count - static_cast<int>(found.size());
     double hi = 0;
     int below = 0;
     if(bounded && remaining <= per_window + per_window / 2)
     {
-      hi = chain.limit; // the last window of a bounded chain: its count is known
-      below = chain.below_limit;
+      hi = limit; // the last window of a bounded chain: its count is known
+      below = below_limit;
     }
     else
     {
@@ -92,10 +103,10 @@ void run_chain(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysi
       hi = lo + step / density;
       for(int attempt = 0;; ++attempt)
       {
-        if(bounded && hi >= chain.limit)
+        if(bounded && hi >= limit)
         {
-          hi = chain.limit;
-          below = chain.below_limit;
+          hi = limit;
+          below = below_limit;
           break;
         }
         below = shifted.factor_at(hi);
@@ -120,11 +131,23 @@ void run_chain(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysi
       }
     }
     if(below > c && hi > 0) density = (below - c) / hi;
+    {
+      std::lock_guard<std::mutex> lock(chain.mutex);
+      if(chain.limit < hi) // cut below this window while it was chosen: end it at the cut
+      {
+        hi = limit = chain.limit;
+        below = chain.below_limit;
+        count = chain.count;
+      }
+      chain.working_hi = hi;
+      chain.below_working_hi = below;
+      chain.density = density;
+    }
     // The shift of the run in the middle, so both ends of the window are equally
     // far -- except for the first window: the residual floor of a Ritz pair grows like
     // |lambda - sigma| / lambda, and the lowest eigenvalues need a shift next to them
     // (just below 0; measured: a shift at the middle of (0, hi] left them at 1e-10).
-    Window w{lo, hi, 0, hi == chain.limit ? hi : hi + 0.5 * (hi - lo), lo == 0 ? -1e-2 / total_mass : 0.5 * (lo + hi)};
+    Window w{lo, hi, 0, hi == limit ? hi : hi + 0.5 * (hi - lo), lo == 0 ? -1e-2 / total_mass : 0.5 * (lo + hi)};
     // Lock the found vectors near the window (and the carried ones) out of the run.
     std::vector<const double*> lock;
     const double reach = lo - 0.5 * (hi - lo);
@@ -149,7 +172,7 @@ void run_chain(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysi
     const int found_before = static_cast<int>(found.size()) + carried_in_window;
     auto report = [&](int in_window) {
       if(monitor.abandon) throw Abandoned();
-      monitor.converged[index] = std::min(chain.count, found_before + in_window);
+      monitor.converged[index] = std::min(count, found_before + in_window);
       if(monitor.report) monitor.report();
     };
     if(w.wanted > 0) // else the carried pairs fill the window: no run, no factorisation
@@ -202,7 +225,7 @@ void run_chain(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysi
     carry = std::move(still_carried);
     lo = hi;
     below_lo = below;
-    monitor.converged[index] = std::min(chain.count, static_cast<int>(found.size()));
+    monitor.converged[index] = std::min(count, static_cast<int>(found.size()));
     if(monitor.report) monitor.report();
   }
   chain.end = lo;
@@ -211,8 +234,8 @@ void run_chain(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysi
 }
 
 // Weyl's law gives the first guess, each further one rescales by the count found.
-int split_point(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysis, int target, double& density,
-                double& split)
+int split_point(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysis, int target, int slack,
+                double& density, double& split)
 {
   const int c = static_cast<int>(p.kernel.cols());
   Shifted_factor shifted(p, analysis);
@@ -227,10 +250,45 @@ int split_point(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analys
       continue;
     }
     if(below > 0) density = below / split;
-    if(below > 0 && std::abs(below - target) <= target / 5) break;
+    if(below > 0 && std::abs(below - target) <= slack) break;
     split = below > 0 ? target / density : 2 * split;
   }
   return below;
+}
+
+double take_over_top(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysis, Chain& victim, int per_window,
+                     Chain& taken)
+{
+  const double none = std::numeric_limits<double>::quiet_NaN();
+  const int c = static_cast<int>(p.kernel.cols());
+  int below_hi = 0, left = 0;
+  double density = 1;
+  {
+    std::lock_guard<std::mutex> lock(victim.mutex);
+    if(!victim.running) return none;
+    below_hi = victim.below_working_hi;
+    left = victim.below_end_wanted() - below_hi;
+    density = victim.density;
+  }
+  if(left < 2 * per_window) return none;
+  // Counted without the lock: the victim goes on meanwhile, and may pass the shift.
+  double split = 0;
+  const int below = c + split_point(p, analysis, below_hi - c + left / 2, left / 6, density, split);
+  std::lock_guard<std::mutex> lock(victim.mutex);
+  const int end = victim.below_end_wanted();
+  if(!victim.running || !(split > victim.working_hi) || !(split < victim.limit) ||
+     below - victim.below_working_hi < per_window / 2 || end - below < per_window / 2)
+    return none;
+  taken.lo = split;
+  taken.below_lo = below;
+  taken.count = end - below;
+  taken.limit = victim.limit;
+  taken.below_limit = victim.below_limit;
+  taken.density = density;
+  victim.limit = split;
+  victim.below_limit = below;
+  victim.count = below - victim.below_lo;
+  return split;
 }
 
 // Pairs on both sides of a split were found by different chains, which did not lock

@@ -9,10 +9,14 @@
 
 #include <CGAL/Tangent_vector_fields/Discrete_operators.h>
 #include <CGAL/Tangent_vector_fields/Generalized_eigensolver.h>
+#include <CGAL/Tangent_vector_fields/internal/Slicing_chain.h>
 
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <cstring>
 #include <string>
 #include <thread>
@@ -305,6 +309,92 @@ TEST(Eigensolver, ProblemsSolvedTogetherEachMeetTheirSpectrum)
         << e.what();
   }
   EXPECT_EQ(calls, 0);
+}
+
+TEST(Eigensolver, ATakenOverChainTopLeavesBothPartsComplete)
+{
+  // A thread out of work cuts a running chain at an inertia-counted shift and runs the top
+  // part as a new chain (`take_over_top`).  Here the victim runs on a thread of its own while
+  // the cut is made, after a wait of 0 to 250 ms: at different points of its run, the later
+  // ones perhaps after the victim passed the shift being counted (then nothing is cut).
+  // Truth: a dense solve of the same matrices -- the inertia at the cut, the union of the
+  // two chains' pairs, and their orthonormality once joined at the cut.
+  namespace I = TVF::internal;
+  Mesh mesh = make_icosphere(3);
+  jitter_vertices(mesh, 0.1, 13);
+  const Vertex_problem q = vertex_problem(mesh);
+  const int count = 150, per_window = 20;
+  TVF::Eigensolver_options dense;
+  dense.dense_size = 4000;
+  const TVF::Eigenpairs reference = TVF::lowest_eigenpairs(q.A, q.d, count + 60, q.kernel, dense);
+  const I::Standard_eigenproblem p(q.A, q.d, q.kernel);
+  TVF::Sparse_ldlt_solver analysis;
+  analysis.analyze(p.A, true);
+  TVF::Eigensolver_options options;
+  options.slice_size = per_window;
+  const double weyl = q.d.sum() / (4 * M_PI);
+  auto start = [&](I::Chain& chain, int chain_count, std::uint64_t seed) {
+    chain.below_lo = chain.below_working_hi = 1; // the constants
+    chain.count = chain_count;
+    chain.density = weyl;
+    chain.seed = seed;
+    chain.running = true;
+  };
+  {
+    // Less than two windows left: nothing is cut.
+    I::Chain short_chain, taken;
+    start(short_chain, 2 * per_window - 1, 1);
+    EXPECT_TRUE(std::isnan(I::take_over_top(p, analysis, short_chain, per_window, taken)));
+    EXPECT_EQ(short_chain.count, 2 * per_window - 1);
+    EXPECT_TRUE(std::isinf(short_chain.limit));
+  }
+  int cuts = 0;
+  for(int wait_ms : {0, 10, 100, 250})
+  {
+    SCOPED_TRACE("cut after " + std::to_string(wait_ms) + " ms");
+    I::Chain victim, taken;
+    start(victim, count, 7 + static_cast<std::uint64_t>(wait_ms));
+    I::Chain_monitor monitor(2);
+    std::thread runner([&] { I::run_chain(p, analysis, victim, options, monitor, 0); });
+    std::this_thread::sleep_for(std::chrono::milliseconds(wait_ms));
+    const double split = I::take_over_top(p, analysis, victim, per_window, taken);
+    if(!std::isnan(split))
+    {
+      ++cuts;
+      // Both ends of the cut hold the number of eigenvalues a dense solve puts below it.
+      const int below_dense = 1 + static_cast<int>((reference.values.array() < split).count());
+      EXPECT_EQ(taken.below_lo, below_dense);
+      EXPECT_EQ(victim.below_limit, below_dense);
+      EXPECT_EQ(taken.lo, split);
+      EXPECT_EQ(victim.below_lo + victim.count + taken.count, 1 + count);
+      taken.running = true;
+      I::run_chain(p, analysis, taken, options, monitor, 1);
+    }
+    runner.join();
+    I::Ritz_set all = victim.found;
+    if(!std::isnan(split))
+    {
+      EXPECT_EQ(victim.end, split); // the victim stopped exactly at the cut
+      EXPECT_EQ(static_cast<int>(victim.found.size()), victim.count);
+      for(const I::Ritz_pair& pair : victim.found) EXPECT_LE(pair.value, split);
+      all.insert(all.end(), taken.found.begin(), taken.found.end());
+      I::join_at(p, split, options.tolerance, all);
+    }
+    std::sort(all.begin(), all.end(), [](const I::Ritz_pair& a, const I::Ritz_pair& b) { return a.value < b.value; });
+    ASSERT_GE(static_cast<int>(all.size()), count);
+    Eigen::MatrixXd Y(q.A.rows(), count);
+    for(int i = 0; i < count; ++i)
+    {
+      EXPECT_LT(std::abs(all[i].value - reference.values[i]) / reference.values[i], 1e-9) << "pair " << i;
+      Y.col(i) = all[i].vector();
+      const Eigen::VectorXd x = Y.col(i).cwiseQuotient(q.d.cwiseSqrt());
+      const Eigen::VectorXd r = (q.A * x - all[i].value * q.d.cwiseProduct(x)).cwiseQuotient(q.d.cwiseSqrt());
+      EXPECT_LE(r.norm() / all[i].value, 1e-10) << "pair " << i; // |D^1/2 x| = 1
+    }
+    EXPECT_LT((Y.transpose() * Y - Eigen::MatrixXd::Identity(count, count)).cwiseAbs().maxCoeff(), 1e-10);
+  }
+  // Without a wait the victim is in its first window, far below the cut.
+  EXPECT_GE(cuts, 1);
 }
 
 TEST(Eigensolver, RefusesImpossibleRequests)

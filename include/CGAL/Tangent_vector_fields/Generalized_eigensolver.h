@@ -56,7 +56,12 @@ struct Eigensolver_options
   /// Spectrum slicing: requests of at least two windows are cut, at an inertia-counted
   /// shift, into this many chains of windows solved at once (0: one per hardware
   /// thread), each with one BLAS thread (OpenBLAS's count is restored afterwards).
-  /// The progress callback is still called on the caller's thread only.
+  /// The progress callback is still called on the caller's thread only.  A thread that
+  /// runs out of chains cuts the top off the running chain with the most work left, at an
+  /// inertia-counted shift, and runs it: where the cuts fall then depends on timing, so
+  /// with several threads the signs of the vectors and the bases chosen in the spaces of
+  /// repeated eigenvalues may differ between runs (the values, the spaces and the checks do
+  /// not).  One thread gives the same pairs for the same `seed`.
   int threads = 0;
   /// Small problems (up to `dense_size` unknowns, or asking for a third of the
   /// space) are solved densely (LAPACK) unless this is false.

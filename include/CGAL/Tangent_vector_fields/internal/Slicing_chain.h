@@ -7,7 +7,8 @@
 /// \file Slicing_chain.h
 /// A chain of spectrum-slicing windows: consecutive windows of one eigenproblem, each
 /// locking out its neighbour's vectors and carrying the pairs it found beyond its end into
-/// the next.  A request is cut at inertia-counted split points into chains that run at once.
+/// the next.  A request is cut at inertia-counted split points into chains that run at once;
+/// a thread that runs out of chains takes over the top of a running one's range.
 
 #include <CGAL/Tangent_vector_fields/Sparse_ldlt_solver.h>
 #include <CGAL/Tangent_vector_fields/internal/Lanczos_window.h>
@@ -17,6 +18,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <mutex>
 #include <vector>
 
 namespace CGAL {
@@ -46,7 +48,9 @@ struct Chain_monitor
 
 /// A chain of windows: from `lo` (with `below_lo` eigenvalues, kernel included, at or below
 /// it) either up to `limit`, whose inertia `below_limit` is known, or -- with an infinite
-/// limit -- until `count` pairs above `lo` are found.
+/// limit -- until `count` pairs above `lo` are found.  While it runs, another thread may
+/// lower its end (`limit`, `below_limit`, `count`) to a shift above the window being run
+/// (`take_over_top`); `mutex` guards those fields, `working_hi` and `density`.
 struct Chain
 {
   double lo = 0;
@@ -63,6 +67,15 @@ struct Chain
   int below_end = 0; ///< inertia at `end`
   int applications = 0, basis_used = 0;
   double seconds = 0; ///< thread time the chain took
+  // Shared while the chain runs.
+  std::mutex mutex;
+  bool running = false;
+  double working_hi = 0;    ///< top of the window being run (or `lo` before the first)
+  int below_working_hi = 0; ///< its inertia, kernel included
+
+  /// Eigenvalues (kernel included) at or below the chain's end: `limit`'s inertia, or the
+  /// index it counts up to.
+  int below_end_wanted() const { return below_lo + count; }
 };
 
 /// Runs `chain` of problem `p` (`analysis`: the fill-reducing analysis of its `A`), reporting
@@ -71,11 +84,21 @@ struct Chain
 void run_chain(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysis, Chain& chain,
                const Eigensolver_options& options, Chain_monitor& monitor, int index);
 
-/// A shift with about `target` eigenvalues (kernel excluded) below it, counted exactly by the
-/// inertia; returns that count.  Starts from `density` (eigenvalues per unit of lambda) and
-/// updates it from the counts found.
-int split_point(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysis, int target, double& density,
-                double& split);
+/// A shift with `target` eigenvalues (kernel excluded), give or take `slack`, below it,
+/// counted exactly by the inertia; returns the count at the shift it stopped at (after at most
+/// six factorisations).  Starts from `density` (eigenvalues per unit of lambda) and updates it
+/// from the counts found.
+int split_point(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysis, int target, int slack,
+                double& density, double& split);
+
+/// Lowers the end of `victim`, a running chain of problem `p`, to an inertia-counted shift
+/// about halfway through what remains of its range above the window it is running, and
+/// makes `taken` (a new chain) the rest: from that shift to the victim's old end.  Both then
+/// run at once.  `per_window` is the window size; a victim with less than two windows left
+/// is not cut.  Returns the shift, or NaN if nothing was taken (the victim ran on past the
+/// shift while it was counted, or too little was left).
+double take_over_top(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysis, Chain& victim, int per_window,
+                     Chain& taken);
 
 /// Rayleigh-Ritz on the pairs near `split`, found by two chains that did not lock each other's
 /// vectors out: makes them orthonormal again.
