@@ -228,6 +228,10 @@ void run_chain(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysi
     monitor.converged[index] = std::min(count, static_cast<int>(found.size()));
     if(monitor.report) monitor.report();
   }
+  // Pairs carried beyond the end (the next chain's, or beyond the count): their vectors
+  // would keep their blocks of the store, and the window's pairs in them, alive until the
+  // chain is destroyed -- past the copy of the result.
+  for(const Ritz_pair& pair : carry) chain.store.release(pair.data);
   chain.end = lo;
   chain.below_end = below_lo;
   chain.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
