@@ -11,6 +11,7 @@
 #include <CGAL/Tangent_vector_fields/internal/Lanczos_window.h>
 
 #include <algorithm>
+#include <functional>
 
 namespace CGAL {
 namespace Tangent_vector_fields {
@@ -106,6 +107,29 @@ Eigen::MatrixXd project_out_of_columns(const Eigen::Ref<const Eigen::MatrixXd>& 
   }
   project_out(Q.data() + first * Q.outerStride(), Q.outerStride(), Q.rows(), count, Z.data(), C.data());
   return C;
+}
+
+Locked_columns::Locked_columns(const std::vector<const double*>& columns, Eigen::Index rows) : rows_(rows)
+{
+  // In address order, adjacent columns join a run (the order of a Gram-Schmidt step's
+  // columns does not matter).
+  std::vector<const double*> sorted = columns;
+  std::sort(sorted.begin(), sorted.end(), std::less<const double*>());
+  for(const double* column : sorted)
+  {
+    if(!runs_.empty() && runs_.back().first + runs_.back().second * rows == column) ++runs_.back().second;
+    else runs_.push_back({column, 1});
+  }
+  count_ = static_cast<Eigen::Index>(columns.size());
+}
+
+void Locked_columns::project_out(Eigen::MatrixXd& Z) const
+{
+  for(const auto& run : runs_)
+  {
+    const Eigen::Map<const Eigen::MatrixXd> V(run.first, rows_, run.second);
+    project_out_of_columns(V, 0, run.second, Z);
+  }
 }
 
 } // namespace internal

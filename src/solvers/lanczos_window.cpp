@@ -153,7 +153,7 @@ bool polish(const Standard_eigenproblem& p, const Window& w, const Eigen::Ref<co
 // kernel).  Collects the converged pairs with eigenvalue in (lo, hi] into `window`
 // (exactly `wanted` of them) and those in (hi, carry_hi) into `carry`.
 void lanczos_window(const Standard_eigenproblem& p, const Eigen::SparseMatrix<double>& K, const Sparse_ldlt_solver& solver,
-                    const Window& w, const Eigen::Ref<const Eigen::MatrixXd>& locked, const Eigensolver_options& options,
+                    const Window& w, const Locked_columns& locked, const Eigensolver_options& options,
                     std::mt19937_64& generator, Lanczos_workspace& space, Ritz_set& window, Ritz_set& carry,
                     Vector_store& store, int& applications, int& basis_used, const std::function<void(int)>& report)
 {
@@ -161,11 +161,11 @@ void lanczos_window(const Standard_eigenproblem& p, const Eigen::SparseMatrix<do
   const int c = static_cast<int>(p.kernel.cols());
   const int b = std::max(1, options.block_size);
   const int wanted = w.wanted;
-  const int free_dimension = static_cast<int>(n) - c - static_cast<int>(locked.cols());
+  const int free_dimension = static_cast<int>(n) - c - static_cast<int>(locked.count());
   const int max_basis = std::min(free_dimension, std::max(6 * wanted + 8 * b, wanted + 40 * b));
   auto deflate = [&](Eigen::MatrixXd& Z) {
     p.deflate(Z);
-    if(locked.cols() > 0) project_out_of_columns(locked, 0, locked.cols(), Z); // the BLAS packs `locked` first
+    locked.project_out(Z);
   };
   // LDL^T without pivoting of an indefinite matrix loses digits: relative solve
   // residuals of 1e-12 to 1e-10 (rocker arm), up to 3e-9 on other meshes.  A pair's true

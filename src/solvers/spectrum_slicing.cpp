@@ -159,9 +159,7 @@ void run_chain(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysi
       lock.push_back(pair.data);
       if(pair.value <= hi) ++carried_in_window;
     }
-    auto locked = Lanczos_workspace::columns(space.locked, n, static_cast<Eigen::Index>(lock.size()), per_window);
-    for(Eigen::Index i = 0; i < locked.cols(); ++i)
-      locked.col(i) = Eigen::Map<const Eigen::VectorXd>(lock[static_cast<std::size_t>(i)], n);
+    const Locked_columns locked(lock, n);
     // Ritz vectors of one run are orthonormal, of different runs orthogonal to the
     // accuracy of the pairs: no need to orthonormalise them again.
     w.wanted = below - below_lo - carried_in_window;

@@ -18,6 +18,7 @@
 #include <functional>
 #include <memory>
 #include <random>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -69,8 +70,7 @@ typedef std::vector<Ritz_pair> Ritz_set;
 struct Lanczos_workspace
 {
   Eigen::MatrixXd Q, H;
-  Eigen::MatrixXd locked; // the converged vectors a window is kept orthogonal to
-  Eigen::MatrixXd ritz;   // the accepted Ritz vectors of a window, before they are copied out
+  Eigen::MatrixXd ritz; // the accepted Ritz vectors of a window, before they are copied out
   void reserve(Eigen::Index n, int columns)
   {
     if(Q.rows() != n || Q.cols() < columns) resize_in_huge_pages(Q, n, columns);
@@ -109,13 +109,30 @@ struct Inaccurate_solves
 Eigen::MatrixXd project_out_of_columns(const Eigen::Ref<const Eigen::MatrixXd>& Q, Eigen::Index first,
                                        Eigen::Index count, Eigen::MatrixXd& Z);
 
+/// Converged vectors a window is kept orthogonal to, read where they are kept (columns of
+/// `Vector_store` blocks), as runs of adjacent columns: a copy into one matrix cost the
+/// memory of ~50 vectors per chain (208 MB at the armadillo's 519k edges) and a pass over
+/// them per window.
+class Locked_columns
+{
+public:
+  Locked_columns(const std::vector<const double*>& columns, Eigen::Index rows);
+  Eigen::Index count() const { return count_; }
+  /// `Z -= V (V^T Z)` for the locked vectors `V` (orthonormal), one Gram-Schmidt step.
+  void project_out(Eigen::MatrixXd& Z) const;
+
+private:
+  std::vector<std::pair<const double*, Eigen::Index>> runs_; // first column, columns
+  Eigen::Index rows_ = 0, count_ = 0;
+};
+
 // One block Lanczos run at shift `w.sigma` on the complement of `locked` (and the
 // kernel).  Collects the converged pairs with eigenvalue in (lo, hi] into `window`
 // (exactly `wanted` of them) and those in (hi, carry_hi) into `carry`, their vectors
 // in `store`.
 // \throws Inaccurate_solves (only without `w.refine`), Numerical_failure.
 void lanczos_window(const Standard_eigenproblem& p, const Eigen::SparseMatrix<double>& K, const Sparse_ldlt_solver& solver,
-                    const Window& w, const Eigen::Ref<const Eigen::MatrixXd>& locked, const Eigensolver_options& options,
+                    const Window& w, const Locked_columns& locked, const Eigensolver_options& options,
                     std::mt19937_64& generator, Lanczos_workspace& space, Ritz_set& window, Ritz_set& carry,
                     Vector_store& store, int& applications, int& basis_used, const std::function<void(int)>& report);
 
