@@ -32,6 +32,7 @@
 #include <deque>
 #include <exception>
 #include <functional>
+#include <limits>
 #include <mutex>
 #include <sstream>
 #include <thread>
@@ -372,7 +373,14 @@ std::vector<Eigenpairs> sliced_eigenpairs(const std::vector<Sliced_request>& req
     Slicing& s = *victim.s;
     Chain& taken = s.chains.emplace_back();
     taken.seed = victim.chain->seed + 0x9e3779b97f4a7c15ull * static_cast<std::uint64_t>(s.chains.size());
-    const double split = take_over_top(*s.p, s.analysis, *victim.chain, per_window, taken);
+    double split = std::numeric_limits<double>::quiet_NaN();
+    try
+    {
+      split = take_over_top(*s.p, s.analysis, *victim.chain, per_window, taken);
+    }
+    catch(const Numerical_failure&) // a factorisation at a trial shift: the cut is optional
+    {
+    }
     if(std::isnan(split))
     {
       s.chains.pop_back();
