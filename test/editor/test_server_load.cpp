@@ -12,6 +12,9 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
+#include <memory>
+#include <string>
 #include <thread>
 
 namespace {
@@ -57,60 +60,87 @@ bool edit_session(int port, int first_face, bool exact, int edits)
   }
 }
 
+// A connection of type `C` to the server; a refusal is retried for up to 10 s.  The server
+// serves at most 16 at once, and a connection that went away keeps its slot until the
+// server's thread of it ends -- a session dropped during an exact answer until the answer is
+// done, which on a loaded machine outlasts the next few connections.  Null (with a test
+// failure) if it was still refused after that.
+template <class C>
+std::unique_ptr<C> connect_retrying(int port, const std::string& what)
+{
+  for(int attempt = 0;; ++attempt)
+  {
+    try
+    {
+      return std::make_unique<C>(port);
+    }
+    catch(const std::exception& e)
+    {
+      if(attempt == 100)
+      {
+        ADD_FAILURE() << what << " was refused for 10 s: " << e.what();
+        return nullptr;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+  }
+}
+
+// Joins the threads however the test body ends (a joinable thread left behind aborts the run).
+struct Joined_threads
+{
+  std::vector<std::thread> threads;
+  ~Joined_threads()
+  {
+    for(std::thread& t : threads)
+      if(t.joinable()) t.join();
+  }
+};
+
 TEST_F(Server_test, sessions_keep_working_while_other_connections_misbehave)
 {
   const int port = server->port();
   std::atomic<int> good{0};
-  std::vector<std::thread> sessions;
+  Joined_threads sessions;
   for(int i = 0; i < 6; ++i)
-    sessions.emplace_back([&, i] { good += edit_session(port, 11 * i + 3, i % 2 == 1, 15); });
+    sessions.threads.emplace_back([&, i] { good += edit_session(port, 11 * i + 3, i % 2 == 1, 15); });
 
   // Meanwhile: misbehaving connections, each of which must end only itself.
   for(int i = 0; i < 12; ++i)
   {
-    { // a frame header announcing 1000 bytes, a few of them, then the socket closes
-      Client cut(port);
+    // a frame header announcing 1000 bytes, a few of them, then the socket closes
+    if(auto cut = connect_retrying<Client>(port, "a connection to cut off"))
+    {
       const unsigned char frame[] = {0x81, 0xFE, 0x03, 0xE8, 1, 2, 3, 4, '{', '"'};
-      asio::write(cut.stream().next_layer(), asio::buffer(frame, sizeof frame));
-      cut.stream().next_layer().close();
+      asio::write(cut->stream().next_layer(), asio::buffer(frame, sizeof frame));
+      cut->stream().next_layer().close();
     }
-    { // an upgrade, closed at once
-      Client closed(port);
-      closed.stream().next_layer().close();
-    }
-    { // a session closed while its exact answer is being computed
-      Session dropped(port);
-      dropped.client.send("{\"type\":\"set_solver\",\"solver\":\"full\"}");
-      dropped.client.send("{\"type\":\"add\",\"constraint\":" + vector_constraint(5 + i, tangent(dropped.mesh, 5 + i)) + "}");
-      dropped.client.stream().next_layer().close();
+    // an upgrade, closed at once
+    if(auto closed = connect_retrying<Client>(port, "a connection to close")) closed->stream().next_layer().close();
+    // a session closed while its exact answer is being computed
+    if(auto dropped = connect_retrying<Session>(port, "a session to drop"))
+    {
+      dropped->client.send("{\"type\":\"set_solver\",\"solver\":\"full\"}");
+      dropped->client.send("{\"type\":\"add\",\"constraint\":" + vector_constraint(5 + i, tangent(dropped->mesh, 5 + i)) + "}");
+      dropped->client.stream().next_layer().close();
     }
   }
-  { // an oversized message (2 MiB), answered with an error while the others go on
-    Session big(port);
-    big.client.send(std::string(2 << 20, ' '));
-    EXPECT_NE(big.client.expect_error().find("exceeds the limit"), std::string::npos);
+  // an oversized message (2 MiB), answered with an error while the others go on
+  if(auto big = connect_retrying<Session>(port, "the session of the oversized message"))
+  {
+    big->client.send(std::string(2 << 20, ' '));
+    EXPECT_NE(big->client.expect_error().find("exceeds the limit"), std::string::npos);
   }
-  for(std::thread& t : sessions) t.join();
+  for(std::thread& t : sessions.threads) t.join();
   EXPECT_EQ(good.load(), 6) << "sessions whose fields were all right";
 
-  // Every connection that went away gave back its slot: 16 sessions (the limit) at once.  The
-  // server's threads of the connections just closed may need a moment to end: a refused
-  // connection is retried for up to 10 s.
+  // Every connection that went away gave back its slot: 16 sessions (the limit) at once.
   std::vector<std::unique_ptr<Session>> full_house;
   for(int i = 0; i < 16; ++i)
-    for(int attempt = 0;; ++attempt)
-    {
-      try
-      {
-        full_house.push_back(std::make_unique<Session>(port));
-        break;
-      }
-      catch(const std::exception& e)
-      {
-        ASSERT_LT(attempt, 100) << "session " << i << " of 16 was refused: " << e.what();
-        std::this_thread::sleep_for(std::chrono::milliseconds(100));
-      }
-    }
+  {
+    full_house.push_back(connect_retrying<Session>(port, "session " + std::to_string(i) + " of 16"));
+    ASSERT_TRUE(full_house.back());
+  }
   for(auto& s : full_house)
   {
     s->client.send("{\"type\":\"ping\",\"request\":3}");
