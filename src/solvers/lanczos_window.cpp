@@ -19,16 +19,27 @@ namespace internal {
 
 double* Vector_store::add(const Eigen::Ref<const Eigen::VectorXd>& v)
 {
-  // 64 columns: a few percent of the basis per block, so that the peak memory while the
-  // pairs are copied out stays near one copy of the basis.
-  constexpr Eigen::Index block_columns = 64;
-  if(blocks_.empty() || !blocks_.back() || blocks_.back()->used == block_columns || blocks_.back()->rows != v.size())
-    blocks_.push_back(std::make_unique<Block>(v.size(), block_columns));
-  Block& block = *blocks_.back();
-  double* column = block.memory.data() + block.used++ * block.rows;
-  Eigen::Map<Eigen::VectorXd>(column, block.rows) = v;
-  ++block.live;
+  double* column = add_columns(v.size(), 1).front().first;
+  Eigen::Map<Eigen::VectorXd>(column, v.size()) = v;
   return column;
+}
+
+std::vector<Vector_store::Run> Vector_store::add_columns(Eigen::Index rows, Eigen::Index count)
+{
+  std::vector<Run> runs;
+  while(count > 0)
+  {
+    if(blocks_.empty() || !blocks_.back() || blocks_.back()->used == blocks_.back()->capacity ||
+       blocks_.back()->rows != rows)
+      blocks_.push_back(std::make_unique<Block>(rows, block_columns));
+    Block& block = *blocks_.back();
+    const Eigen::Index taken = std::min(count, block.capacity - block.used);
+    runs.emplace_back(block.memory.data() + block.used * rows, taken);
+    block.used += taken;
+    block.live += taken;
+    count -= taken;
+  }
+  return runs;
 }
 
 bool Vector_store::release(const double* column)
@@ -36,6 +47,7 @@ bool Vector_store::release(const double* column)
   for(std::unique_ptr<Block>& block : blocks_)
     if(block && block->holds(column))
     {
+      if(column == block->memory.data() + (block->used - 1) * block->rows) --block->used;
       if(--block->live == 0) block.reset(); // the next `add` starts a new block if it was the last
       return true;
     }
@@ -273,34 +285,57 @@ void lanczos_window(const Standard_eigenproblem& p, const Eigen::SparseMatrix<do
                               std::to_string(w.hi) + "] than the inertia count " + std::to_string(wanted));
     if(static_cast<int>(in_window.size()) == wanted)
     {
-      // Accept on the true residual of A x = lambda D x.
+      // Accept on the true residual of A x = lambda D x.  The Ritz vectors are computed
+      // straight into the store, one product per run of adjacent columns.
       std::vector<int> all = in_window;
       all.insert(all.end(), in_carry.begin(), in_carry.end());
-      Eigen::MatrixXd S(complete, all.size());
-      Eigen::VectorXd values(all.size());
-      for(std::size_t i = 0; i < all.size(); ++i)
+      const Eigen::Index count = static_cast<Eigen::Index>(all.size());
+      Eigen::MatrixXd S(complete, count);
+      Eigen::VectorXd values(count), residuals(count), tolerances(count);
+      for(Eigen::Index i = 0; i < count; ++i)
       {
         S.col(i) = T.col(all[i]);
         values[i] = w.sigma + 1 / theta[all[i]];
       }
-      auto Y = Lanczos_workspace::columns(space.ritz, n, static_cast<Eigen::Index>(all.size()), wanted / 2 + b);
-      Y.noalias() = Q.leftCols(complete) * S;
-      Eigen::VectorXd residuals, tolerances;
-      p.residuals_of_standard(values, Y, options.tolerance, residuals, &tolerances);
+      std::vector<double*> columns;
+      Eigen::Index first = 0;
+      for(const Vector_store::Run& run : store.add_columns(n, count))
+      {
+        Eigen::Map<Eigen::MatrixXd> Y(run.first, n, run.second);
+        Y.noalias() = Q.leftCols(complete) * S.middleCols(first, run.second);
+        Eigen::VectorXd r, t;
+        p.residuals_of_standard(values.segment(first, run.second), Y, options.tolerance, r, &t);
+        residuals.segment(first, run.second) = r;
+        tolerances.segment(first, run.second) = t;
+        for(Eigen::Index j = 0; j < run.second; ++j) columns.push_back(run.first + j * n);
+        first += run.second;
+      }
+      auto give_back = [&](Eigen::Index i) { store.release(columns[static_cast<std::size_t>(i)]); };
       bool window_ok = true;
       for(std::size_t i = 0; i < in_window.size(); ++i) window_ok = window_ok && residuals[i] <= tolerances[i];
       if(window_ok)
       {
-        for(std::size_t i = 0; i < all.size(); ++i)
+        for(Eigen::Index i = count - 1; i >= 0; --i) // last first: the store reuses the last column given back
         {
-          if(i >= in_window.size() && !(residuals[i] <= tolerances[i]))
-            continue; // carry only if accurate
-          Ritz_set& target = i < in_window.size() ? window : carry;
-          target.push_back({values[i], store.add(Y.col(i)), n, residuals[i], tolerances[i]});
+          const bool in = i < static_cast<Eigen::Index>(in_window.size());
+          if(!in && !(residuals[i] <= tolerances[i])) give_back(i); // carry only if accurate
+        }
+        for(Eigen::Index i = 0; i < count; ++i)
+        {
+          const bool in = i < static_cast<Eigen::Index>(in_window.size());
+          if(in || residuals[i] <= tolerances[i])
+            (in ? window : carry).push_back({values[i], columns[static_cast<std::size_t>(i)], n, residuals[i], tolerances[i]});
         }
         basis_used = std::max(basis_used, complete);
         return;
       }
+      Eigen::MatrixXd Y; // rare: a copy for polishing
+      if(indefinite && !refine)
+      {
+        Y.resize(n, count);
+        for(Eigen::Index i = 0; i < count; ++i) Y.col(i) = Eigen::Map<Eigen::VectorXd>(columns[static_cast<std::size_t>(i)], n);
+      }
+      for(Eigen::Index i = count - 1; i >= 0; --i) give_back(i);
       if(indefinite && !refine)
       {
         // The estimate holds for the inexact operator only.

@@ -9,6 +9,7 @@
 
 #include <CGAL/Tangent_vector_fields/Discrete_operators.h>
 #include <CGAL/Tangent_vector_fields/Generalized_eigensolver.h>
+#include <CGAL/Tangent_vector_fields/internal/Lanczos_window.h>
 #include <CGAL/Tangent_vector_fields/internal/Slicing_chain.h>
 
 #include <Eigen/Dense>
@@ -395,6 +396,32 @@ TEST(Eigensolver, ATakenOverChainTopLeavesBothPartsComplete)
   }
   // Without a wait the victim is in its first window, far below the cut.
   EXPECT_GE(cuts, 1);
+}
+
+TEST(Eigensolver, VectorStoreHandsOutRunsOfColumnsAndReusesTheLastOneGivenBack)
+{
+  // A window's Ritz vectors are computed straight into runs of adjacent store columns.
+  TVF::internal::Vector_store store;
+  const Eigen::Index rows = 7;
+  const auto runs = store.add_columns(rows, 100); // blocks hold 64 columns
+  ASSERT_EQ(runs.size(), 2u);
+  EXPECT_EQ(runs[0].second, 64);
+  EXPECT_EQ(runs[1].second, 36);
+  for(const auto& run : runs) // writable, and the runs do not overlap
+    Eigen::Map<Eigen::MatrixXd>(run.first, rows, run.second).setConstant(static_cast<double>(run.second));
+  EXPECT_EQ(runs[0].first[64 * rows - 1], 64.);
+  EXPECT_EQ(runs[1].first[0], 36.);
+  const Eigen::VectorXd v = Eigen::VectorXd::LinSpaced(rows, 1, 7);
+  double* next = store.add(v);
+  EXPECT_EQ(next, runs[1].first + 36 * rows); // after the run, in the same block
+  EXPECT_TRUE(store.release(next));          // the last column: reused by the next add
+  EXPECT_EQ(store.add(v), next);
+  EXPECT_TRUE(store.release(runs[1].first + 3 * rows)); // a middle column: not reused
+  double* after = store.add(v);
+  EXPECT_EQ(after, next + rows);
+  EXPECT_EQ(Eigen::Map<Eigen::VectorXd>(after, rows), v);
+  double outside = 0;
+  EXPECT_FALSE(store.release(&outside));
 }
 
 TEST(Eigensolver, RefusesImpossibleRequests)

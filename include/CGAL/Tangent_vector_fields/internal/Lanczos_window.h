@@ -34,10 +34,20 @@ class Vector_store
 public:
   /// A new column holding `v`.
   double* add(const Eigen::Ref<const Eigen::VectorXd>& v);
-  /// Gives `column` back; false if it is not one of this store's.
+  /// A run of adjacent new columns (uninitialised): its first column and its length.
+  typedef std::pair<double*, Eigen::Index> Run;
+  /// `count` new columns of `rows` entries, as few runs as the blocks allow (a window's
+  /// Ritz vectors are computed straight into them: a buffer of their size per chain was
+  /// 83 MB at the bunny's 104k edges).
+  std::vector<Run> add_columns(Eigen::Index rows, Eigen::Index count);
+  /// Gives `column` back; false if it is not one of this store's.  The last column added
+  /// to a block is reused by the next `add`.
   bool release(const double* column);
 
 private:
+  // 64 columns: a few percent of the basis per block, so that the peak memory while the
+  // pairs are copied out stays near one copy of the basis.
+  static constexpr Eigen::Index block_columns = 64;
   struct Block
   {
     Block(Eigen::Index rows, Eigen::Index capacity)
@@ -70,20 +80,11 @@ typedef std::vector<Ritz_pair> Ritz_set;
 struct Lanczos_workspace
 {
   Eigen::MatrixXd Q, H;
-  Eigen::MatrixXd ritz; // the accepted Ritz vectors of a window, before they are copied out
   void reserve(Eigen::Index n, int columns)
   {
     if(Q.rows() != n || Q.cols() < columns) resize_in_huge_pages(Q, n, columns);
     if(H.rows() < columns) H.resize(columns, columns);
     H.topLeftCorner(columns, columns).setZero();
-  }
-  /// The first `count` columns of `buffer`, grown (with `spare` more) when it has fewer:
-  /// a fresh block of this size is fresh memory, whose page faults cost as much as a solve.
-  typedef Eigen::Block<Eigen::MatrixXd, Eigen::Dynamic, Eigen::Dynamic, true> Columns;
-  static Columns columns(Eigen::MatrixXd& buffer, Eigen::Index n, Eigen::Index count, Eigen::Index spare)
-  {
-    if(buffer.rows() != n || buffer.cols() < count) resize_in_huge_pages(buffer, n, count + spare);
-    return buffer.leftCols(count);
   }
 };
 
