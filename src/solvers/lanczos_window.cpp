@@ -310,22 +310,20 @@ void lanczos_window(const Standard_eigenproblem& p, const Eigen::SparseMatrix<do
         for(Eigen::Index j = 0; j < run.second; ++j) columns.push_back(run.first + j * n);
         first += run.second;
       }
+      const Eigen::Index in_count = static_cast<Eigen::Index>(in_window.size());
+      auto accurate = [&](Eigen::Index i) { return residuals[i] <= tolerances[i]; };
       auto give_back = [&](Eigen::Index i) { store.release(columns[static_cast<std::size_t>(i)]); };
       bool window_ok = true;
-      for(std::size_t i = 0; i < in_window.size(); ++i) window_ok = window_ok && residuals[i] <= tolerances[i];
+      for(Eigen::Index i = 0; i < in_count; ++i) window_ok = window_ok && accurate(i);
       if(window_ok)
       {
-        for(Eigen::Index i = count - 1; i >= 0; --i) // last first: the store reuses the last column given back
-        {
-          const bool in = i < static_cast<Eigen::Index>(in_window.size());
-          if(!in && !(residuals[i] <= tolerances[i])) give_back(i); // carry only if accurate
-        }
+        // Carried only if accurate; the others given back last first (the store reuses the
+        // last column given back).
+        for(Eigen::Index i = count - 1; i >= in_count; --i)
+          if(!accurate(i)) give_back(i);
         for(Eigen::Index i = 0; i < count; ++i)
-        {
-          const bool in = i < static_cast<Eigen::Index>(in_window.size());
-          if(in || residuals[i] <= tolerances[i])
-            (in ? window : carry).push_back({values[i], columns[static_cast<std::size_t>(i)], n, residuals[i], tolerances[i]});
-        }
+          if(i < in_count || accurate(i))
+            (i < in_count ? window : carry).push_back({values[i], columns[static_cast<std::size_t>(i)], n, residuals[i], tolerances[i]});
         basis_used = std::max(basis_used, complete);
         return;
       }

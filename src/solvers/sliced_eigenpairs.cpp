@@ -38,10 +38,6 @@
 #include <thread>
 #include <vector>
 
-#ifdef __GLIBC__
-#include <malloc.h>
-#endif
-
 // OpenBLAS's thread count, where OpenBLAS is the BLAS (weak: absent with another BLAS).
 extern "C" void openblas_set_num_threads(int) __attribute__((weak));
 extern "C" int openblas_get_num_threads(void) __attribute__((weak));
@@ -340,14 +336,7 @@ std::vector<Eigenpairs> sliced_eigenpairs(const std::vector<Sliced_request>& req
       }
     } stopped{chain};
     run_chain(*j.s->p, j.s->analysis, chain, options, monitor, j.index);
-#ifdef __GLIBC__
-    // A chain's temporaries (solves' blocks, shifted matrices, parts of factors) were
-    // allocated in its thread's heap, which keeps them once freed where the process keeps
-    // freed memory (`keep_freed_memory`, as the tool and benchmarks do): given back here,
-    // before the next chain, the bench's peak fell from 1.27 to 1.15 GB (bunny), 0.46 to
-    // 0.39 GB (rocker arm) and 5.71 to 5.52 GB (armadillo).
-    malloc_trim(0);
-#endif
+    give_back_freed_heap(); // the chain's factor, shifted matrix and solves' blocks
   };
   for(const Job& j : jobs) tasks.push_back([&run_job, j] { run_job(j); });
   // Once the queue is empty: the top of the running chain with the most work left (unknowns

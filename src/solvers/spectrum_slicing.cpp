@@ -27,11 +27,11 @@
 #include <mutex>
 #include <random>
 #include <string>
+#include <vector>
 
 #ifdef __GLIBC__
 #include <malloc.h>
 #endif
-#include <vector>
 
 namespace CGAL {
 namespace Tangent_vector_fields {
@@ -63,6 +63,13 @@ struct Shifted_factor
 
 } // namespace
 
+void give_back_freed_heap()
+{
+#ifdef __GLIBC__
+  malloc_trim(0);
+#endif
+}
+
 void run_chain(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysis, Chain& chain,
                const Eigensolver_options& options, Chain_monitor& monitor, int index)
 {
@@ -91,7 +98,13 @@ void run_chain(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysi
       below_limit = chain.below_limit;
       count = chain.count;
     }
-    if(static_cast<int>(found.size()) >= count) break;
+    if(static_cast<int>(found.size()) >= count)
+    {
+      // All the pairs below the end found short of it (a cut placed in a gap above the
+      // window just run): by the inertia, nothing lies between, so the chain ends at its end.
+      if(limit < std::numeric_limits<double>::infinity() && below_lo == below_limit) lo = limit;
+      break;
+    }
     const bool bounded = limit < std::numeric_limits<double>::infinity();
     const int remaining = count - static_cast<int>(found.size());
     double hi = 0;
@@ -219,13 +232,8 @@ void run_chain(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysi
         run_window(wider);
       }
     }
+    give_back_freed_heap();
     // Move the carried pairs of this window to `found`; keep the others.
-#ifdef __GLIBC__
-    // What the window freed (a polish's factorisation and blocks, about 60 MB on 104k
-    // unknowns) stays in this thread's heap where the process keeps freed memory
-    // (`keep_freed_memory`): given back here, not at the chain's end.
-    malloc_trim(0);
-#endif
     Ritz_set still_carried;
     for(Ritz_pair& pair : carry) (pair.value <= hi ? found : still_carried).push_back(std::move(pair));
     for(Ritz_pair& pair : window) found.push_back(std::move(pair));
