@@ -7,6 +7,7 @@
 // relations and by the modified connection, refusals, constraint files.
 
 #include "n_field_test_support.h"
+#include "scratch_path.h"
 
 #include <CGAL/Tangent_vector_fields/N_field_basis.h>
 #include <CGAL/Tangent_vector_fields/N_field_singularities.h>
@@ -119,7 +120,7 @@ TEST(NFieldBasis, KernelFirstOnTheCubeAndFilesRoundTrip)
   EXPECT_EQ(basis.eigenvalue(0), 0.);
   EXPECT_GT(basis.eigenvalue(2), 0.);
 
-  const std::string path = ::testing::TempDir() + "/cube4.tvfn";
+  const std::string path = scratch_path("cube4.tvfn");
   basis.save(path);
   const TVF::N_field_basis loaded = TVF::N_field_basis::load(nops, path);
   EXPECT_EQ(loaded.kernel_dimension(), 2);
@@ -555,7 +556,7 @@ TEST(NFieldSpline, GenericInterfaceOnALoadedBasis)
 {
   Mesh sphere = make_icosphere(2);
   TVF::N_field_spline<Mesh> computed(sphere, 2, TVF::parameters::number_of_eigenfields(40));
-  const std::string path = ::testing::TempDir() + "/sphere2.tvfn";
+  const std::string path = scratch_path("sphere2.tvfn");
   computed.basis()->save(path);
   TVF::Discrete_operators<Mesh> ops(sphere);
   const auto nops = std::make_shared<const TVF::N_field_operators>(ops.shared_matrices(), 2);

@@ -8,6 +8,7 @@
 // files (.rawfield of degree n, .sing, .vtp) written and read back.
 
 #include "n_field_test_support.h"
+#include "scratch_path.h"
 
 #include <CGAL/Tangent_vector_fields/N_field_basis.h>
 #include <CGAL/Tangent_vector_fields/N_field_singularities.h>
@@ -497,7 +498,7 @@ TEST(NFieldBasis, LoadRefusesAFieldThatIsNotOfUnitNorm)
   const Mesh cube = make_cube(4);
   const auto nops = n_field_operators(cube, 4);
   const TVF::N_field_basis basis(nops, 12);
-  const std::string path = ::testing::TempDir() + "/corrupt_cube4.tvfn";
+  const std::string path = scratch_path("corrupt_cube4.tvfn");
   basis.save(path);
   std::string bytes;
   {

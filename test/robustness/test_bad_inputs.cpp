@@ -9,6 +9,7 @@
 // test_bad_n_fields.cpp and test_bad_streamlines.cpp.
 
 #include "bad_input_support.h"
+#include "scratch_path.h"
 
 #include <CGAL/Tangent_vector_fields/N_field_basis.h>
 #include <CGAL/Tangent_vector_fields/Spectral_basis.h>
@@ -261,7 +262,7 @@ TEST(BadBasis, SavingToAnUnwritablePathAndLoadingGarbageAreClearErrors)
   const Mesh mesh = make_icosphere(1);
   const Basis basis(mesh, TVF::parameters::number_of_eigenfields(6));
   expect_error<TVF::Invalid_input>([&] { basis.save("/nonexistent-folder/basis.tvfb"); }, "/nonexistent-folder");
-  const std::string path = ::testing::TempDir() + "bad_basis_garbage.tvfb";
+  const std::string path = scratch_path("bad_basis_garbage.tvfb");
   {
     std::FILE* f = std::fopen(path.c_str(), "wb");
     std::fputs("TVFB but not really a basis file at all", f);

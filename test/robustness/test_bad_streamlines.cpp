@@ -6,6 +6,7 @@
 // end, degenerate meshes, pictures of no size or a NaN camera.
 
 #include "bad_input_support.h"
+#include "scratch_path.h"
 
 #include <CGAL/Tangent_vector_fields/Streamlines.h>
 #ifdef TVF_HAS_CAIRO
@@ -253,7 +254,7 @@ TEST(BadPictures, EmptyMeshesAndImpossibleImagesAreRefused)
   Mesh empty;
   expect_defect(TVF::Mesh_defect::empty, [&] { TVF::Field_picture<Mesh> p(empty); });
   Mesh mesh = make_icosphere(1);
-  const std::string path = ::testing::TempDir() + "bad_picture.png";
+  const std::string path = scratch_path("bad_picture.png");
   auto refused = [&](const std::function<void(TVF::Render_options&)>& set, const std::string& phrase) {
     TVF::Render_options o;
     o.width = 64;
@@ -301,7 +302,7 @@ TEST(BadPictures, BadFieldsAreRefusedAndDegenerateValuesAreDrawn)
   const Field zero = mesh.add_property_map<Face_index, Vector_3>("f:zero", Vector_3(0, 0, 0)).first;
   picture.add_arrows(zero);
   EXPECT_TRUE(picture.add_evenly_spaced_streamlines(zero).empty());
-  const std::string path = ::testing::TempDir() + "bad_values.png";
+  const std::string path = scratch_path("bad_values.png");
   picture.write_png(path);
   std::FILE* f = std::fopen(path.c_str(), "rb");
   ASSERT_NE(f, nullptr);

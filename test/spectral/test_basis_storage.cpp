@@ -5,6 +5,7 @@
 // basis files that pass the size checks but are not a basis.
 
 #include "test_meshes.h"
+#include "scratch_path.h"
 
 #include <CGAL/Tangent_vector_fields/Discrete_operators.h>
 #include <CGAL/Tangent_vector_fields/Reduced_spline_solver.h>
@@ -74,7 +75,7 @@ TEST(SpectralBasis, Float32StorageHalvesTheMemoryAndAddsOnlyRounding)
   EXPECT_LT(relative(spline32.field(), spline64.field()), 1e-5);
 
   // Files: about half the size; a float32 file loads as float32, entry for entry.
-  const std::string p64 = ::testing::TempDir() + "tvf_basis_64.tvfb", p32 = ::testing::TempDir() + "tvf_basis_32.tvfb";
+  const std::string p64 = scratch_path("basis_64.tvfb"), p32 = scratch_path("basis_32.tvfb");
   b64.save(p64);
   b32.save(p32);
   const auto size = [](const std::string& p) { return static_cast<double>(std::ifstream(p, std::ios::binary | std::ios::ate).tellg()); };
@@ -95,7 +96,7 @@ TEST(SpectralBasis, LoadRefusesCorruptBasesThatPassTheSizeChecks)
   Mesh torus = make_torus(16, 9);
   Basis basis(torus, TVF::parameters::number_of_eigenfields(30));
   const TVF::Eigenfield_basis& b = basis.basis();
-  const std::string path = ::testing::TempDir() + "tvf_corrupt_basis.tvfb";
+  const std::string path = scratch_path("corrupt_basis.tvfb");
   basis.save(path);
   std::ifstream in(path, std::ios::binary);
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

@@ -6,6 +6,7 @@
 // The eigensolver behind it is tested in test_eigensolver.cpp.
 
 #include "test_meshes.h"
+#include "scratch_path.h"
 
 #include <CGAL/Tangent_vector_fields/Discrete_operators.h>
 #include <CGAL/Tangent_vector_fields/Generalized_eigensolver.h>
@@ -242,7 +243,7 @@ TEST(SpectralBasis, SaveAndLoadRoundTripAndRefuseOtherMeshes)
 {
   Mesh torus = make_torus(16, 9);
   Basis basis(torus, TVF::parameters::number_of_eigenfields(50));
-  const std::string path = ::testing::TempDir() + "tvf_basis_test.bin";
+  const std::string path = scratch_path("basis_test.bin");
   basis.save(path);
   const Basis loaded = Basis::load(torus, path);
   ASSERT_EQ(loaded.size(), basis.size());

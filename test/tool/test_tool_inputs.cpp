@@ -8,6 +8,7 @@
 #include "coefficient_file.h"
 #include "editor_messages.h"
 #include "mesh_input.h"
+#include "scratch_path.h"
 #include "tool.h"
 
 #include <gtest/gtest.h>
@@ -27,7 +28,7 @@ namespace {
 // A temporary file with `bytes`, named `name` in the test's folder.
 std::string file_with(const std::string& name, const std::string& bytes)
 {
-  const std::string path = ::testing::TempDir() + name;
+  const std::string path = tvf_test::scratch_path(name);
   std::ofstream out(path, std::ios::binary);
   out << bytes;
   return path;
@@ -41,7 +42,7 @@ std::string coefficient_bytes(int k)
   file.signature = {{1, -2, 3, -4}};
   file.relative_error = 0.125;
   file.coefficients = Eigen::VectorXd::LinSpaced(k, -1, 1);
-  const std::string path = ::testing::TempDir() + "valid.tvfc";
+  const std::string path = tvf_test::scratch_path("valid.tvfc");
   write_coefficient_file(path, file);
   std::ifstream in(path, std::ios::binary);
   std::ostringstream bytes;

@@ -6,6 +6,7 @@
 // singular vertices marked where the surface shows them, and the wrappers on property maps.
 
 #include "picture_test_support.h"
+#include "scratch_path.h"
 #include "test_meshes.h"
 
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
@@ -31,11 +32,9 @@ using namespace tvf_picture_test;
 
 namespace {
 
-std::string temporary_path(const std::string& name) { return ::testing::TempDir() + "tvf_npictures_" + name; }
-
 Image picture_of(const TVF::Field_renderer& renderer, const std::string& name)
 {
-  const std::string file = temporary_path(name + ".png");
+  const std::string file = scratch_path(name + ".png");
   renderer.write_png(file);
   return read_png(file);
 }
@@ -329,7 +328,7 @@ TEST(NFieldPictures, SingularityMarksShowTheSignTheIndexAndALabel)
   // In SVG the discs are vector paths: the visible one only.
   TVF::Field_renderer r(ops.shared_matrices()->shared_mesh(), front_view(size, size));
   r.add_singularities({{nearest, 1}, {farthest, 1}}, 4);
-  const std::string svg_file = temporary_path("marks.svg");
+  const std::string svg_file = scratch_path("marks.svg");
   r.write_svg(svg_file);
   std::ifstream in(svg_file);
   const std::string svg{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
@@ -389,9 +388,9 @@ TEST(NFieldPictures, PicturesOfAnNFieldInAPropertyMap)
   b.add_n_field_glyphs(turned, 4);
   EXPECT_EQ(a.add_n_field_singularities(cross, 4), singular); // what smoothest_n_field reported
   EXPECT_EQ(b.add_n_field_singularities(turned, 4), singular);
-  a.write_png(temporary_path("picture_a.png"));
-  b.write_png(temporary_path("picture_b.png"));
-  EXPECT_EQ(count_differences(read_png(temporary_path("picture_a.png")), read_png(temporary_path("picture_b.png"))), 0);
+  a.write_png(scratch_path("picture_a.png"));
+  b.write_png(scratch_path("picture_b.png"));
+  EXPECT_EQ(count_differences(read_png(scratch_path("picture_a.png")), read_png(scratch_path("picture_b.png"))), 0);
 
   // The colours are the energy density: its range, largest around the singular vertices.
   TVF::Discrete_operators<Mesh> ops(sphere);
@@ -436,10 +435,10 @@ TEST(NFieldPictures, LogarithmicColourScale)
   linear.colour_faces(value);
   logarithmic.colour_faces(value, log_scale);
   EXPECT_EQ(logarithmic.renderer().colour_range(), std::make_pair(lo, hi));
-  linear.write_png(temporary_path("linear.png"));
-  logarithmic.write_png(temporary_path("logarithmic.png"));
-  const std::uint32_t a = read_png(temporary_path("linear.png")).at(100, 100),
-                      b = read_png(temporary_path("logarithmic.png")).at(100, 100);
+  linear.write_png(scratch_path("linear.png"));
+  logarithmic.write_png(scratch_path("logarithmic.png"));
+  const std::uint32_t a = read_png(scratch_path("linear.png")).at(100, 100),
+                      b = read_png(scratch_path("logarithmic.png")).at(100, 100);
   EXPECT_LT(Image::green(a), Image::blue(a));
   EXPECT_GT(Image::green(b), Image::red(b) + 50);
 
@@ -468,7 +467,7 @@ TEST(NFieldPictures, ValuesEqualUpToRoundingShowOneColour)
   const auto range = b.renderer().colour_range();
   EXPECT_LT(range.first, 1 - 1e-4);
   EXPECT_GT(range.second, 1 + 1e-4);
-  a.write_png(temporary_path("one.png"));
-  b.write_png(temporary_path("nearly_one.png"));
-  EXPECT_EQ(count_differences(read_png(temporary_path("one.png")), read_png(temporary_path("nearly_one.png"))), 0);
+  a.write_png(scratch_path("one.png"));
+  b.write_png(scratch_path("nearly_one.png"));
+  EXPECT_EQ(count_differences(read_png(scratch_path("one.png")), read_png(scratch_path("nearly_one.png"))), 0);
 }

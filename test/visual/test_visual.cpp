@@ -6,6 +6,7 @@
 // export formats and their round trips; pictures and charts.
 
 #include "test_meshes.h"
+#include "scratch_path.h"
 
 #include <CGAL/Tangent_vector_fields/Discrete_operators.h>
 #include <CGAL/Tangent_vector_fields/Streamlines.h>
@@ -510,8 +511,6 @@ TEST(Streamlines, BadArgumentsAreRefused)
 
 namespace {
 
-std::string temporary_path(const std::string& name) { return ::testing::TempDir() + "tvf_visual_" + name; }
-
 std::vector<std::string> lines_of(const std::string& filename)
 {
   std::ifstream in(filename);
@@ -528,7 +527,7 @@ TEST(Exports, VtpRoundTripIsExact)
   jitter_vertices(sphere, 0.3, 2);
   Field wind = ambient_field_map(sphere, "wind", 3);
   Field gust = ambient_field_map(sphere, "gust", 4);
-  const std::string file = temporary_path("fields.vtp");
+  const std::string file = scratch_path("fields.vtp");
   TVF::write_vtp(file, sphere, std::vector<std::pair<std::string, Field>>{{"wind", wind}, {"gust", gust}});
   Field wind_back = field_map(sphere, "wind_back"), gust_back = field_map(sphere, "gust_back");
   TVF::read_vtp(file, sphere, "wind", wind_back);
@@ -588,7 +587,7 @@ TEST(Exports, RawFieldRoundTripIsExactAndFollowsDirectionalsLayout)
 {
   Mesh torus = make_torus(12, 8);
   Field field = ambient_field_map(torus, "wind", 9);
-  const std::string file = temporary_path("wind.rawfield");
+  const std::string file = scratch_path("wind.rawfield");
   TVF::write_raw_field(file, torus, field);
   const std::vector<std::string> lines = lines_of(file);
   ASSERT_EQ(lines.size(), torus.number_of_faces() + 1);
@@ -612,7 +611,7 @@ TEST(Exports, RawFieldRoundTripIsExactAndFollowsDirectionalsLayout)
     two.vectors.push_back({field[f].x(), field[f].y(), field[f].z()});
     two.vectors.push_back({-field[f].y(), field[f].x(), 0.25});
   }
-  const std::string file2 = temporary_path("two.rawfield");
+  const std::string file2 = scratch_path("two.rawfield");
   {
     std::ofstream out(file2);
     TVF::write_raw_field(out, two);
@@ -650,7 +649,7 @@ TEST(Exports, StreamlinesAsObjPlyAndVtpKeepEveryPoint)
   EXPECT_GT(closed, 0u); // the level circles close
 
   // OBJ: vertices, and one polyline per streamline (closed ones repeat their first index).
-  const std::string obj = temporary_path("lines.obj");
+  const std::string obj = scratch_path("lines.obj");
   TVF::write_streamlines_obj(obj, lines);
   std::vector<P3> points;
   std::vector<std::vector<std::size_t>> polylines;
@@ -683,7 +682,7 @@ TEST(Exports, StreamlinesAsObjPlyAndVtpKeepEveryPoint)
   }
 
   // PLY: header with edge elements, vertices with face and streamline, one edge per segment.
-  const std::string ply = temporary_path("lines.ply");
+  const std::string ply = scratch_path("lines.ply");
   TVF::write_streamlines_ply(ply, lines);
   const std::vector<std::string> text = lines_of(ply);
   const auto end_header = std::find(text.begin(), text.end(), "end_header");
@@ -706,7 +705,7 @@ TEST(Exports, StreamlinesAsObjPlyAndVtpKeepEveryPoint)
   EXPECT_EQ(text.size() - row, segments + closed);
 
   // VTP polylines, read back with the package's reader.
-  const std::string vtp = temporary_path("lines.vtp");
+  const std::string vtp = scratch_path("lines.vtp");
   TVF::write_streamlines_vtp(vtp, lines);
   std::ifstream in(vtp);
   const TVF::Vtk_polydata data = TVF::read_vtk_polydata(in);
@@ -727,7 +726,7 @@ TEST(Charts, SvgLineChartHasOneCurvePerSeriesOnLogAxes)
   chart.title = "error against time";
   chart.series.push_back({"elephant", {0.01, 0.1, 1, 10}, {1e-2, 1e-4, 1e-6, 1e-8}});
   chart.series.push_back({"bunny <69k>", {0.02, 0.3, 2}, {3e-3, 2e-5, -1}}); // the last point cannot be drawn
-  const std::string file = temporary_path("chart.svg");
+  const std::string file = scratch_path("chart.svg");
   TVF::write_svg_line_chart(file, chart);
   std::ifstream in(file);
   const std::string svg{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
@@ -780,7 +779,7 @@ TEST(Pictures, SphereFillsTheMiddleAndLeavesTheCornersEmpty)
 {
   Mesh sphere = make_icosphere(3);
   TVF::Field_picture<Mesh> picture(sphere, front_view(240, 160));
-  const std::string file = temporary_path("sphere.png");
+  const std::string file = scratch_path("sphere.png");
   picture.write_png(file);
   const Image image = read_png(file);
   ASSERT_EQ(image.width, 240);
@@ -829,11 +828,11 @@ TEST(Pictures, LinesBehindTheSurfaceAreHidden)
   with_back.add_streamlines({back}, red);
   TVF::Field_picture<Mesh> with_front(sphere, front_view(200, 200));
   with_front.add_streamlines({front}, red);
-  plain.write_png(temporary_path("plain.png"));
-  with_back.write_png(temporary_path("back.png"));
-  with_front.write_png(temporary_path("front.png"));
-  const Image a = read_png(temporary_path("plain.png")), b = read_png(temporary_path("back.png")),
-              c = read_png(temporary_path("front.png"));
+  plain.write_png(scratch_path("plain.png"));
+  with_back.write_png(scratch_path("back.png"));
+  with_front.write_png(scratch_path("front.png"));
+  const Image a = read_png(scratch_path("plain.png")), b = read_png(scratch_path("back.png")),
+              c = read_png(scratch_path("front.png"));
   EXPECT_EQ(count_differences(a, b), 0);
   // The front circle (radius sqrt(3)/2 in a unit sphere of radius 92 pixels) is drawn:
   // a red ring of about 2 pi 80 pixels' length and 2 pixels' width.
@@ -877,7 +876,7 @@ TEST(Pictures, ColourMapRangeAndLegend)
   }
   EXPECT_EQ(range.first, lo);
   EXPECT_EQ(range.second, hi);
-  const std::string file = temporary_path("height.png");
+  const std::string file = scratch_path("height.png");
   picture.write_png(file);
   const Image image = read_png(file);
   // Model left of the legend: high values (yellow) at the top, low (purple) at the bottom.
@@ -927,11 +926,11 @@ TEST(Pictures, ArrowsFurAndSvg)
   hair.length = 0.05;
   const auto strokes = fur.add_fur(field, hair);
   EXPECT_GT(strokes.size(), 700u);
-  plain.write_png(temporary_path("torus.png"));
-  arrows.write_png(temporary_path("torus_arrows.png"));
-  fur.write_png(temporary_path("torus_fur.png"));
-  const Image a = read_png(temporary_path("torus.png")), b = read_png(temporary_path("torus_arrows.png")),
-              c = read_png(temporary_path("torus_fur.png"));
+  plain.write_png(scratch_path("torus.png"));
+  arrows.write_png(scratch_path("torus_arrows.png"));
+  fur.write_png(scratch_path("torus_fur.png"));
+  const Image a = read_png(scratch_path("torus.png")), b = read_png(scratch_path("torus_arrows.png")),
+              c = read_png(scratch_path("torus_fur.png"));
   ASSERT_EQ(a.width, 300);
   EXPECT_NE(a.at(150, 100 - 55) & 0xffffff, white); // the front of the ring
   EXPECT_EQ(a.at(2, 2) & 0xffffff, white);
@@ -954,7 +953,7 @@ TEST(Pictures, ArrowsFurAndSvg)
     }
   EXPECT_EQ(stray, 0);
 
-  const std::string svg_file = temporary_path("torus.svg");
+  const std::string svg_file = scratch_path("torus.svg");
   fur.write_svg(svg_file);
   std::ifstream in(svg_file);
   const std::string svg{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
