@@ -2,11 +2,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 
 #include <CGAL/Tangent_vector_fields/Operator_matrices.h>
+#include <CGAL/Tangent_vector_fields/internal/Lazy_value.h>
 #include <CGAL/Tangent_vector_fields/internal/compressed_matrix.h>
 
 #include <algorithm>
 #include <functional>
-#include <optional>
 #include <utility>
 #include <vector>
 
@@ -99,9 +99,9 @@ Vector safe_inverse(const Vector& d)
 
 struct Operator_matrices::Cache
 {
-  std::optional<Vector> face_areas, vertex_masses, edge_masses, field_masses;
-  std::optional<Vector> inverse_vertex_masses, inverse_edge_masses;
-  std::optional<Sparse_matrix> G, G_star, G_star_interior, M, M_star, MX, J, W, W_star, S, L, B;
+  internal::Lazy_value<Vector> face_areas, vertex_masses, edge_masses, field_masses;
+  internal::Lazy_value<Vector> inverse_vertex_masses, inverse_edge_masses;
+  internal::Lazy_value<Sparse_matrix> G, G_star, G_star_interior, M, M_star, MX, J, W, W_star, S, L, B;
 };
 
 Operator_matrices::Operator_matrices(std::shared_ptr<const Intrinsic_mesh> mesh)
@@ -112,49 +112,41 @@ Operator_matrices::~Operator_matrices() = default;
 
 const Vector& Operator_matrices::face_areas() const
 {
-  if(!cache_->face_areas)
-  {
+  return cache_->face_areas.get([&] {
     Vector a(mesh_->number_of_faces());
     for(int f = 0; f < a.size(); ++f) a[f] = mesh_->face_area(f);
-    cache_->face_areas = std::move(a);
-  }
-  return *cache_->face_areas;
+    return a;
+  });
 }
 
 const Vector& Operator_matrices::vertex_masses() const
 {
-  if(!cache_->vertex_masses)
-  {
+  return cache_->vertex_masses.get([&] {
     Vector m = Vector::Zero(mesh_->number_of_vertices());
     for(int f = 0; f < mesh_->number_of_faces(); ++f)
       for(int v : mesh_->face_vertices(f)) m[v] += mesh_->face_area(f) / 3;
-    cache_->vertex_masses = std::move(m);
-  }
-  return *cache_->vertex_masses;
+    return m;
+  });
 }
 
 const Vector& Operator_matrices::edge_masses() const
 {
-  if(!cache_->edge_masses)
-  {
+  return cache_->edge_masses.get([&] {
     Vector m = Vector::Zero(mesh_->number_of_edges());
     for(int f = 0; f < mesh_->number_of_faces(); ++f)
       for(int e : mesh_->face_edges(f)) m[e] += mesh_->face_area(f) / 3;
-    cache_->edge_masses = std::move(m);
-  }
-  return *cache_->edge_masses;
+    return m;
+  });
 }
 
 const Vector& Operator_matrices::field_masses() const
 {
-  if(!cache_->field_masses)
-  {
+  return cache_->field_masses.get([&] {
     const Vector& a = face_areas();
     Vector m(2 * a.size());
     for(Eigen::Index f = 0; f < a.size(); ++f) m[2 * f] = m[2 * f + 1] = a[f];
-    cache_->field_masses = std::move(m);
-  }
-  return *cache_->field_masses;
+    return m;
+  });
 }
 
 namespace {
@@ -214,25 +206,24 @@ void cotan_block(const Intrinsic_mesh& mesh, int f, double scale, double block[3
 
 const Sparse_matrix& Operator_matrices::G() const
 {
-  if(!cache_->G)
-    cache_->G = gradient_matrix(*mesh_, mesh_->number_of_vertices(), 1.,
-                                [this](int f, int k) { return mesh_->face_vertices(f)[k]; });
-  return *cache_->G;
+  return cache_->G.get([&] {
+    return gradient_matrix(*mesh_, mesh_->number_of_vertices(), 1.,
+                           [this](int f, int k) { return mesh_->face_vertices(f)[k]; });
+  });
 }
 
 // psi_e = 1 - 2 phi_k for the edge e opposite corner k, so grad psi_e = -2 grad phi_k.
 const Sparse_matrix& Operator_matrices::G_star() const
 {
-  if(!cache_->G_star)
-    cache_->G_star = gradient_matrix(*mesh_, mesh_->number_of_edges(), -2.,
-                                     [this](int f, int k) { return mesh_->face_edges(f)[k]; });
-  return *cache_->G_star;
+  return cache_->G_star.get([&] {
+    return gradient_matrix(*mesh_, mesh_->number_of_edges(), -2.,
+                           [this](int f, int k) { return mesh_->face_edges(f)[k]; });
+  });
 }
 
 const Sparse_matrix& Operator_matrices::G_star_interior() const
 {
-  if(!cache_->G_star_interior)
-  {
+  return cache_->G_star_interior.get([&] {
     // Number interior edges first and boundary edges after them, then cut those off.
     const int ne = mesh_->number_of_edges(), ni = mesh_->number_of_interior_edges();
     std::vector<int> column(ne);
@@ -241,33 +232,28 @@ const Sparse_matrix& Operator_matrices::G_star_interior() const
       column[e] = mesh_->is_boundary_edge(e) ? next_boundary++ : mesh_->interior_edge_index(e);
     const Sparse_matrix full =
         gradient_matrix(*mesh_, ne, -2., [&](int f, int k) { return column[mesh_->face_edges(f)[k]]; });
-    cache_->G_star_interior = Sparse_matrix(full.leftCols(ni));
-  }
-  return *cache_->G_star_interior;
+    return Sparse_matrix(full.leftCols(ni));
+  });
 }
 
 const Sparse_matrix& Operator_matrices::M() const
 {
-  if(!cache_->M) cache_->M = diagonal_matrix(vertex_masses());
-  return *cache_->M;
+  return cache_->M.get([&] { return diagonal_matrix(vertex_masses()); });
 }
 
 const Sparse_matrix& Operator_matrices::M_star() const
 {
-  if(!cache_->M_star) cache_->M_star = diagonal_matrix(edge_masses());
-  return *cache_->M_star;
+  return cache_->M_star.get([&] { return diagonal_matrix(edge_masses()); });
 }
 
 const Sparse_matrix& Operator_matrices::MX() const
 {
-  if(!cache_->MX) cache_->MX = diagonal_matrix(field_masses());
-  return *cache_->MX;
+  return cache_->MX.get([&] { return diagonal_matrix(field_masses()); });
 }
 
 const Sparse_matrix& Operator_matrices::J() const
 {
-  if(!cache_->J)
-  {
+  return cache_->J.get([&] {
     const int n = 2 * mesh_->number_of_faces();
     Sparse_matrix J(n, n);
     J.resizeNonZeros(n);
@@ -279,37 +265,35 @@ const Sparse_matrix& Operator_matrices::J() const
       J.valuePtr()[c] = (c % 2 == 0) ? 1. : -1.;
     }
     J.outerIndexPtr()[n] = n;
-    cache_->J = std::move(J);
-  }
-  return *cache_->J;
+    return J;
+  });
 }
 
 const Sparse_matrix& Operator_matrices::W() const
 {
-  if(!cache_->W)
-    cache_->W = assemble_face_blocks(
+  return cache_->W.get([&] {
+    return assemble_face_blocks(
         mesh_->number_of_vertices(), mesh_->number_of_faces(),
         [this](int f, int k) { return mesh_->face_vertices(f)[k]; },
         [this](int f, double block[3][3]) { cotan_block(*mesh_, f, 1., block); });
-  return *cache_->W;
+  });
 }
 
 const Sparse_matrix& Operator_matrices::W_star() const
 {
   // grad psi_e = -2 grad phi_k: the Crouzeix-Raviart block is 4 times the cotan block.
-  if(!cache_->W_star)
-    cache_->W_star = assemble_face_blocks(
+  return cache_->W_star.get([&] {
+    return assemble_face_blocks(
         mesh_->number_of_interior_edges(), mesh_->number_of_faces(),
         [this](int f, int k) { return mesh_->interior_edge_index(mesh_->face_edges(f)[k]); },
         [this](int f, double block[3][3]) { cotan_block(*mesh_, f, 4., block); });
-  return *cache_->W_star;
+  });
 }
 
 namespace {
-const Vector& cached_inverse(std::optional<Vector>& slot, const Vector& d)
+const Vector& cached_inverse(const internal::Lazy_value<Vector>& slot, const Vector& d)
 {
-  if(!slot) slot = safe_inverse(d);
-  return *slot;
+  return slot.get([&] { return Vector(safe_inverse(d)); });
 }
 } // namespace
 
@@ -319,8 +303,7 @@ const Vector& cached_inverse(std::optional<Vector>& slot, const Vector& d)
 // an order of magnitude faster than the general sparse products.
 const Sparse_matrix& Operator_matrices::S() const
 {
-  if(!cache_->S)
-  {
+  return cache_->S.get([&] {
     const Intrinsic_mesh& m = *mesh_;
     const int nf = m.number_of_faces(), nv = m.number_of_vertices();
     const Vector& inverse_mass = cached_inverse(cache_->inverse_vertex_masses, vertex_masses());
@@ -414,25 +397,21 @@ const Sparse_matrix& Operator_matrices::S() const
       }
       outer[2 * g + 2] = static_cast<int>(inner.size());
     }
-    cache_->S = internal::compressed_matrix(2 * nf, 2 * nf, outer, inner, values);
-  }
-  return *cache_->S;
+    return internal::compressed_matrix(2 * nf, 2 * nf, outer, inner, values);
+  });
 }
 
 const Sparse_matrix& Operator_matrices::L() const
 {
-  if(!cache_->L) cache_->L = Sparse_matrix(safe_inverse(field_masses()).asDiagonal() * S());
-  return *cache_->L;
+  return cache_->L.get([&] { return Sparse_matrix(safe_inverse(field_masses()).asDiagonal() * S()); });
 }
 
 const Sparse_matrix& Operator_matrices::B() const
 {
-  if(!cache_->B)
-  {
+  return cache_->B.get([&] {
     const Sparse_matrix& s = S();
-    cache_->B = Sparse_matrix(s * (safe_inverse(field_masses()).asDiagonal() * s));
-  }
-  return *cache_->B;
+    return Sparse_matrix(s * (safe_inverse(field_masses()).asDiagonal() * s));
+  });
 }
 
 Vector Operator_matrices::rotate(const Vector& v)

@@ -3,12 +3,12 @@
 
 #include <CGAL/Tangent_vector_fields/N_field_operators.h>
 #include <CGAL/Tangent_vector_fields/errors.h>
+#include <CGAL/Tangent_vector_fields/internal/Lazy_value.h>
 #include <CGAL/Tangent_vector_fields/internal/n_field_geometry.h>
 #include <CGAL/Tangent_vector_fields/internal/singularity_connection.h>
 
 #include <cmath>
 #include <complex>
-#include <optional>
 #include <queue>
 #include <vector>
 
@@ -57,12 +57,12 @@ double wrap_angle(double a)
 
 struct N_field_operators::Cache
 {
-  std::optional<Vector> transport, connection, weights, curvatures;
-  std::optional<Sparse_matrix> S;
-  std::optional<Eigen::SparseMatrix<std::complex<double>>> complex_S;
-  std::optional<Matrix> kernel;
-  std::optional<std::vector<int>> vertex_corner;
-  std::optional<std::vector<char>> boundary_vertices; // 3 f + k of one corner of each vertex, -1: none
+  internal::Lazy_value<Vector> transport, connection, weights, curvatures;
+  internal::Lazy_value<Sparse_matrix> S;
+  internal::Lazy_value<Eigen::SparseMatrix<std::complex<double>>> complex_S;
+  internal::Lazy_value<Matrix> kernel;
+  internal::Lazy_value<std::vector<int>> vertex_corner;
+  internal::Lazy_value<std::vector<char>> boundary_vertices; // 3 f + k of one corner of each vertex, -1: none
 };
 
 N_field_operators::N_field_operators(std::shared_ptr<const Operator_matrices> operators, int n,
@@ -114,8 +114,7 @@ N_field_operators::~N_field_operators() = default;
 
 const N_field_operators::Vector& N_field_operators::transport_angles() const
 {
-  if(!cache_->transport)
-  {
+  return cache_->transport.get([&] {
     const Intrinsic_mesh& mesh = this->mesh();
     Vector t(mesh.number_of_interior_edges());
     for(int i = 0; i < t.size(); ++i)
@@ -125,26 +124,22 @@ const N_field_operators::Vector& N_field_operators::transport_angles() const
       const auto& ff = mesh.edge_faces(e);
       t[i] = internal::edge_angle(mesh, ff[0], v[0], v[1]) - internal::edge_angle(mesh, ff[1], v[0], v[1]);
     }
-    cache_->transport = std::move(t);
-  }
-  return *cache_->transport;
+    return t;
+  });
 }
 
 const N_field_operators::Vector& N_field_operators::connection_angles() const
 {
-  if(!cache_->connection)
-  {
+  return cache_->connection.get([&] {
     Vector t = transport_angles();
     if(!options_.singularities.empty()) t += internal::singularity_connection(*this);
-    cache_->connection = std::move(t);
-  }
-  return *cache_->connection;
+    return t;
+  });
 }
 
 const N_field_operators::Vector& N_field_operators::edge_weights() const
 {
-  if(!cache_->weights)
-  {
+  return cache_->weights.get([&] {
     const Intrinsic_mesh& mesh = this->mesh();
     Vector w(mesh.number_of_interior_edges());
     for(int i = 0; i < w.size(); ++i)
@@ -154,29 +149,25 @@ const N_field_operators::Vector& N_field_operators::edge_weights() const
       const double l = mesh.edge_length(e);
       w[i] = 3 * l * l / (mesh.face_area(ff[0]) + mesh.face_area(ff[1]));
     }
-    cache_->weights = std::move(w);
-  }
-  return *cache_->weights;
+    return w;
+  });
 }
 
 const std::vector<char>& N_field_operators::boundary_vertices() const
 {
-  if(!cache_->boundary_vertices)
-  {
+  return cache_->boundary_vertices.get([&] {
     const Intrinsic_mesh& mesh = this->mesh();
     std::vector<char> on_boundary(mesh.number_of_vertices(), 0);
     for(int e = 0; e < mesh.number_of_edges(); ++e)
       if(mesh.is_boundary_edge(e))
         for(int v : mesh.edge_vertices(e)) on_boundary[v] = 1;
-    cache_->boundary_vertices = std::move(on_boundary);
-  }
-  return *cache_->boundary_vertices;
+    return on_boundary;
+  });
 }
 
 const N_field_operators::Vector& N_field_operators::vertex_curvatures() const
 {
-  if(!cache_->curvatures)
-  {
+  return cache_->curvatures.get([&] {
     const Intrinsic_mesh& mesh = this->mesh();
     Vector angle_sum = Vector::Zero(mesh.number_of_vertices());
     const std::vector<char>& on_boundary = boundary_vertices();
@@ -185,15 +176,13 @@ const N_field_operators::Vector& N_field_operators::vertex_curvatures() const
     Vector K(mesh.number_of_vertices());
     for(int v = 0; v < K.size(); ++v)
       K[v] = mesh.is_isolated_vertex(v) ? 0. : (on_boundary[v] ? M_PI : 2 * M_PI) - angle_sum[v];
-    cache_->curvatures = std::move(K);
-  }
-  return *cache_->curvatures;
+    return K;
+  });
 }
 
 const N_field_operators::Sparse_matrix& N_field_operators::S() const
 {
-  if(!cache_->S)
-  {
+  return cache_->S.get([&] {
     const Intrinsic_mesh& mesh = this->mesh();
     const Vector& t = connection_angles();
     const Vector& w = edge_weights();
@@ -221,9 +210,8 @@ const N_field_operators::Sparse_matrix& N_field_operators::S() const
       for(int a = 0; a < 2; ++a) entries.emplace_back(2 * f + a, 2 * f + a, diagonal[f]);
     Sparse_matrix S(2 * mesh.number_of_faces(), 2 * mesh.number_of_faces());
     S.setFromTriplets(entries.begin(), entries.end());
-    cache_->S = std::move(S);
-  }
-  return *cache_->S;
+    return S;
+  });
 }
 
 double N_field_operators::transport_angle(int e, int from) const
@@ -236,15 +224,14 @@ double N_field_operators::transport_angle(int e, int from) const
 N_field_operators::Vertex_fan N_field_operators::vertex_fan(int v) const
 {
   const Intrinsic_mesh& mesh = this->mesh();
-  if(!cache_->vertex_corner)
-  {
+  const std::vector<int>& vertex_corner = cache_->vertex_corner.get([&] {
     std::vector<int> corner(mesh.number_of_vertices(), -1);
     for(int f = 0; f < mesh.number_of_faces(); ++f)
       for(int k = 0; k < 3; ++k) corner[mesh.face_vertices(f)[k]] = 3 * f + k;
-    cache_->vertex_corner = std::move(corner);
-  }
+    return corner;
+  });
   Vertex_fan fan;
-  int c = (*cache_->vertex_corner)[v];
+  int c = vertex_corner[v];
   if(c < 0) return fan;
   // Counter-clockwise around v, face f (v at corner k) is followed across local edge k+1 and
   // preceded across local edge k+2.  Around a boundary vertex, first walk back to the start.
@@ -273,8 +260,7 @@ N_field_operators::Vertex_fan N_field_operators::vertex_fan(int v) const
 
 const Eigen::SparseMatrix<std::complex<double>>& N_field_operators::complex_S() const
 {
-  if(!cache_->complex_S)
-  {
+  return cache_->complex_S.get([&] {
     // Assembled directly (not from the real form): the smoothest field needs only this one.
     const Intrinsic_mesh& mesh = this->mesh();
     const Vector& t = connection_angles();
@@ -295,9 +281,8 @@ const Eigen::SparseMatrix<std::complex<double>>& N_field_operators::complex_S() 
     for(int f = 0; f < mesh.number_of_faces(); ++f) entries.emplace_back(f, f, diagonal[f]);
     Eigen::SparseMatrix<std::complex<double>> C(mesh.number_of_faces(), mesh.number_of_faces());
     C.setFromTriplets(entries.begin(), entries.end());
-    cache_->complex_S = std::move(C);
-  }
-  return *cache_->complex_S;
+    return C;
+  });
 }
 
 void N_field_operators::add_boundary_diagonal(Vector& diagonal) const
@@ -356,8 +341,7 @@ double N_field_operators::m_harmonic_energy(const Vector& z, int m) const
 
 const N_field_operators::Matrix& N_field_operators::kernel() const
 {
-  if(!cache_->kernel)
-  {
+  return cache_->kernel.get([&] {
     const Intrinsic_mesh& mesh = this->mesh();
     const int nf = mesh.number_of_faces();
     const int components = mesh.topology().number_of_components();
@@ -423,9 +407,8 @@ const N_field_operators::Matrix& N_field_operators::kernel() const
         K(2 * f + 1, 2 * column[c] + 1) = x;
       }
     }
-    cache_->kernel = std::move(K);
-  }
-  return *cache_->kernel;
+    return K;
+  });
 }
 
 N_field_operators::Vector N_field_operators::from_vectors(const Vector& vectors) const

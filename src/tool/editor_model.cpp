@@ -80,8 +80,9 @@ void Editor_model::set_n_field_basis_source(N_field_basis_source source)
 
 namespace {
 
-// The operators' lazy caches are filled before sessions share them (they are not
-// thread-safe while being built): everything the solvers, the tracer and the index use.
+// The operators' lazy caches are filled before the basis is announced, so that the first
+// edit of the first page does not wait for them: everything the solvers, the tracer and the
+// index use.
 void warm_up(const TVF::N_field_operators& ops)
 {
   ops.transport_angles();

@@ -101,9 +101,6 @@ public:
   double diagonal() const { return diagonal_; }
   int initial_basis_size() const { return initial_basis_size_; }
   const Editor_limits& limits() const { return limits_; }
-  /// The full-resolution solves share the Hodge solver's factorisations (CHOLMOD's
-  /// workspace is not thread-safe): one session at a time.
-  std::mutex& full_solver_mutex() const { return full_mutex_; }
   /// The binary `mesh` message (made once).
   const Outgoing& mesh_message() const;
 
@@ -114,7 +111,7 @@ private:
   double diagonal_;
   int initial_basis_size_;
   Editor_limits limits_;
-  mutable std::mutex mutex_, full_mutex_;
+  mutable std::mutex mutex_;
   mutable std::condition_variable changed_;
   Status status_;
   std::shared_ptr<const TVF::Eigenfield_basis> basis_;

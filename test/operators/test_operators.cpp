@@ -11,6 +11,10 @@
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <thread>
+#include <vector>
+
 namespace TVF = CGAL::Tangent_vector_fields;
 using namespace tvf_test;
 
@@ -289,4 +293,52 @@ TEST(Operators, NamedParametersMixOursAndCgals)
   for(const auto* ops : {&ours, &theirs, &mixed, &combined})
     EXPECT_NEAR(ops->matrices().face_areas().sum(), 4 * a, 1e-12 * a);
   EXPECT_EQ(mixed.intrinsic_mesh().mollification_delta(), 0.); // nothing to mollify on a good mesh
+}
+
+// The editor's sessions share one set of operators, each session on its own thread, and the
+// matrices are built on first use: whichever threads ask at once, each matrix is built once
+// (every thread gets the same object) and equals the one built by a single thread.  Before,
+// two threads building a matrix at once crashed the editor's server.
+TEST(Operators, MatricesAskedForByManyThreadsAtOnceAreBuiltOnce)
+{
+  const Mesh mesh = make_torus(60, 40);
+  typedef const Sparse& (TVF::Operator_matrices::*Accessor)() const;
+  const std::vector<Accessor> accessors = {
+      &TVF::Operator_matrices::G,  &TVF::Operator_matrices::G_star, &TVF::Operator_matrices::G_star_interior,
+      &TVF::Operator_matrices::M,  &TVF::Operator_matrices::M_star, &TVF::Operator_matrices::MX,
+      &TVF::Operator_matrices::J,  &TVF::Operator_matrices::W,      &TVF::Operator_matrices::W_star,
+      &TVF::Operator_matrices::S,  &TVF::Operator_matrices::L,      &TVF::Operator_matrices::B};
+  const TVF::Discrete_operators<Mesh> alone(mesh);
+  for(int round = 0; round < 20; ++round)
+  {
+    const TVF::Discrete_operators<Mesh> shared(mesh);
+    const TVF::Operator_matrices& ops = shared.matrices();
+    const int threads = 8;
+    std::vector<std::vector<const Sparse*>> seen(threads);
+    std::vector<Eigen::VectorXd> divergences(threads);
+    const Eigen::VectorXd v = Eigen::VectorXd::LinSpaced(2 * mesh.number_of_faces(), -1, 1);
+    std::atomic<int> waiting{threads};
+    std::vector<std::thread> pool;
+    for(int t = 0; t < threads; ++t)
+      pool.emplace_back([&, t] {
+        for(--waiting; waiting.load() > 0;) // all start together
+          ;
+        for(std::size_t k = 0; k < accessors.size(); ++k) // in a different order per thread
+          seen[t].push_back(&(ops.*accessors[(k + 5 * t) % accessors.size()])());
+        divergences[t] = ops.divergence(v);
+      });
+    for(std::thread& t : pool) t.join();
+    for(std::size_t k = 0; k < accessors.size(); ++k)
+    {
+      const Sparse& reference = (alone.matrices().*accessors[k])();
+      for(int t = 0; t < threads; ++t)
+      {
+        const Sparse* got = seen[t][(k + accessors.size() - (5 * t) % accessors.size()) % accessors.size()];
+        ASSERT_EQ(got, &(ops.*accessors[k])()) << "matrix " << k << " built more than once (thread " << t << ")";
+        ASSERT_EQ(got->nonZeros(), reference.nonZeros()) << "matrix " << k;
+        EXPECT_EQ((*got - reference).norm(), 0.) << "matrix " << k;
+      }
+    }
+    for(int t = 0; t < threads; ++t) EXPECT_EQ((divergences[t] - alone.matrices().divergence(v)).norm(), 0.);
+  }
 }

@@ -47,8 +47,7 @@ struct Hodge_parts
 ///
 /// The const member functions may be called from several threads at once (each
 /// factorisation is made and used under its own lock, so a vertex solve and an edge solve can
-/// run side by side), provided the operators' matrices they use have been built; the
-/// `Operator_matrices` caches themselves are not thread-safe while being built.
+/// run side by side).
 class Hodge_solver
 {
 public:

@@ -67,7 +67,7 @@ struct N_field_options
 /// the surface's own.  The first-order energy is
 /// `E_D(z) = sum_e w_e |z_f - rho_fg^n z_g|^2`, `w_e = 3 |e|^2 / (A_f + A_g)`, the
 /// matrix `S_n` (free boundary by default, see `N_field_boundary`).  Matrices are built
-/// on first request and cached; not thread-safe while they are built.
+/// on first request and cached, once, also when several threads ask at the same time.
 class N_field_operators
 {
 public:

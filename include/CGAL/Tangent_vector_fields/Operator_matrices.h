@@ -29,8 +29,8 @@ namespace Tangent_vector_fields {
 /// edges only (numbered by `Intrinsic_mesh::interior_edge_index`).  Vertices in no
 /// face have zero mass and zero rows.
 ///
-/// Each accessor builds its matrix on first call and caches it; the class is not
-/// thread-safe while matrices are being built.
+/// Each accessor builds its matrix on first call and caches it.  The accessors may be
+/// called from several threads at once: a matrix is built once, the others wait for it.
 class Operator_matrices
 {
 public:

@@ -63,10 +63,9 @@ struct Spline_answer
 /// removal of the constraint being pulled back, `set_omega`, destruction) takes effect when
 /// the current constraint's pull-back ends, and its result is dropped.  The answer is always
 /// consistent: the reduced spline of every constraint, or the full spline of every one.
-/// The worker makes each constraint's rows again (`prepare`) after this thread has made them
-/// for the reduced solver, so the operators' caches those rows need (built on first use, not
-/// thread-safe while being built) exist by then; the full solver's own matrices are built by
-/// the worker alone.
+/// The worker makes each constraint's rows again (`prepare`); the operators' caches those
+/// rows need are built once whichever thread asks first, and the full solver's own matrices
+/// are built by the worker alone.
 template <class Reduced, class Full>
 class Basic_refining_spline_solver
 {
