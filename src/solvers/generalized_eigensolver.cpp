@@ -163,7 +163,8 @@ std::vector<Eigenpairs> lowest_eigenpairs_of_each(const std::vector<Eigenproblem
     const int n = static_cast<int>(r.A.rows()), c = static_cast<int>(r.kernel.cols());
     if(r.count == 0)
     {
-      result[i].vectors.resize(n, 0);
+      if(options.float32_vectors) result[i].vectors_float32.resize(n, 0);
+      else result[i].vectors.resize(n, 0);
       result[i].complete_below = n - c > 0 ? 0. : std::numeric_limits<double>::infinity();
       continue;
     }
@@ -171,7 +172,15 @@ std::vector<Eigenpairs> lowest_eigenpairs_of_each(const std::vector<Eigenproblem
     const Problem& p = *standard.back();
     const bool dense =
         options.allow_dense && (n <= options.dense_size || r.count + 3 * options.block_size > (n - c) / 3);
-    if(dense && dense_lowest(r.A, p, r.count, options, result[i])) continue;
+    if(dense && dense_lowest(r.A, p, r.count, options, result[i]))
+    {
+      if(options.float32_vectors) // small problems: rounded at the end
+      {
+        result[i].vectors_float32 = result[i].vectors.cast<float>();
+        result[i].vectors.resize(0, 0);
+      }
+      continue;
+    }
     sliced.push_back({p, r.count});
     sliced_index.push_back(i);
   }

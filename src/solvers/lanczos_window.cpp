@@ -17,43 +17,6 @@ namespace CGAL {
 namespace Tangent_vector_fields {
 namespace internal {
 
-double* Vector_store::add(const Eigen::Ref<const Eigen::VectorXd>& v)
-{
-  double* column = add_columns(v.size(), 1).front().first;
-  Eigen::Map<Eigen::VectorXd>(column, v.size()) = v;
-  return column;
-}
-
-std::vector<Vector_store::Run> Vector_store::add_columns(Eigen::Index rows, Eigen::Index count)
-{
-  std::vector<Run> runs;
-  while(count > 0)
-  {
-    if(blocks_.empty() || !blocks_.back() || blocks_.back()->used == blocks_.back()->capacity ||
-       blocks_.back()->rows != rows)
-      blocks_.push_back(std::make_unique<Block>(rows, block_columns));
-    Block& block = *blocks_.back();
-    const Eigen::Index taken = std::min(count, block.capacity - block.used);
-    runs.emplace_back(block.memory.data() + block.used * rows, taken);
-    block.used += taken;
-    block.live += taken;
-    count -= taken;
-  }
-  return runs;
-}
-
-bool Vector_store::release(const double* column)
-{
-  for(std::unique_ptr<Block>& block : blocks_)
-    if(block && block->holds(column))
-    {
-      if(column == block->memory.data() + (block->used - 1) * block->rows) --block->used;
-      if(--block->live == 0) block.reset(); // the next `add` starts a new block if it was the last
-      return true;
-    }
-  return false;
-}
-
 namespace {
 
 // The pairs of an unrefined run that converged by the Lanczos estimate but missed their

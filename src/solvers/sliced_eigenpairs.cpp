@@ -194,7 +194,7 @@ void make_chains(Slicing& s, std::uint64_t seed)
 }
 
 // The lowest `count` pairs found by the chains of `s`, joined at the splits and checked.
-Eigenpairs merge(Slicing& s, double tolerance)
+Eigenpairs merge(Slicing& s, const Eigensolver_options& options)
 {
   const Standard_eigenproblem& p = *s.p;
   const Eigen::Index n = p.A.rows();
@@ -207,13 +207,13 @@ Eigenpairs merge(Slicing& s, double tolerance)
   {
     for(Ritz_pair& pair : ch.found)
       if(pair.value <= ch.limit) found.push_back(std::move(pair));
-      else ch.store.release(pair.data);
+      else release_vector(ch, pair);
     ch.found.clear();
     result.operator_applications += ch.applications;
     result.basis_size = std::max(result.basis_size, ch.basis_used);
     result.thread_seconds += ch.seconds;
   }
-  for(double split : s.splits) join_at(p, split, tolerance, found);
+  for(double split : s.splits) join_at(p, split, options.tolerance, found);
 
   // Sort, keep the lowest `count`.  Every pair met its tolerance on its true residual
   // when its window (or the join) accepted it.
@@ -227,12 +227,14 @@ Eigenpairs merge(Slicing& s, double tolerance)
   // the vectors not returned are given back first, the others as they are copied.
   auto release = [&](const Ritz_pair& pair) {
     for(Chain& ch : s.chains)
-      if(ch.store.release(pair.data)) return;
+      if(release_vector(ch, pair)) return;
   };
   for(std::size_t i = static_cast<std::size_t>(count); i < order.size(); ++i) release(found[order[i]]);
   result.values.resize(count);
   result.residuals.resize(count);
-  resize_in_huge_pages(result.vectors, n, count);
+  const bool rounded = options.float32_vectors;
+  if(rounded) resize_in_huge_pages(result.vectors_float32, n, count);
+  else resize_in_huge_pages(result.vectors, n, count);
   for(int i = 0; i < count; ++i)
   {
     Ritz_pair& pair = found[order[i]];
@@ -245,7 +247,9 @@ Eigenpairs merge(Slicing& s, double tolerance)
     }
     result.values[i] = pair.value;
     result.residuals[i] = pair.residual;
-    result.vectors.col(i) = p.inv_sqrt_d.cwiseProduct(pair.vector());
+    if(!rounded) result.vectors.col(i) = p.inv_sqrt_d.cwiseProduct(pair.vector());
+    else if(pair.rounded) result.vectors_float32.col(i) = Eigen::Map<const Eigen::VectorXf>(pair.rounded, n);
+    else result.vectors_float32.col(i) = p.inv_sqrt_d.cwiseProduct(pair.vector()).cast<float>();
     release(pair);
   }
   const Chain& last = *std::max_element(s.chains.begin(), s.chains.end(),
@@ -385,7 +389,7 @@ std::vector<Eigenpairs> sliced_eigenpairs(const std::vector<Sliced_request>& req
   tasks.clear();
 
   std::vector<Eigenpairs> result;
-  for(Slicing& s : slicing) result.push_back(merge(s, options.tolerance));
+  for(Slicing& s : slicing) result.push_back(merge(s, options));
   return result;
 }
 

@@ -61,6 +61,31 @@ struct Shifted_factor
   }
 };
 
+// `join_at` makes the pairs within this relative distance of a split between two chains
+// orthonormal again.
+constexpr double join_reach = 0.05;
+
+// For vectors returned in float32: rounds the found vectors of `chain` that no window needs
+// in double any more, so that the finished part of the basis takes half the memory while the
+// rest is solved.  Those are the pairs below both the reach of the window about to run
+// (from `lo`; windows lock out only the pairs near them, a rounded one is skipped if a wider
+// later window reaches down to it: it lies below that window, which collects only the pairs
+// inside it) and the join reach of `lo` (a cut another thread makes lies above the running
+// window), and above the join reach of the chain's start.
+void round_settled(const Standard_eigenproblem& p, Chain& chain, double lo, double reach)
+{
+  const double below = std::min(reach, (1 - join_reach) * lo), above = (1 + join_reach) * chain.lo;
+  for(Ritz_pair& pair : chain.found)
+    if(pair.data && pair.value < below && pair.value > above)
+    {
+      float* column = chain.rounded.add_columns(pair.size, 1).front().first;
+      Eigen::Map<Eigen::VectorXf>(column, pair.size) = p.inv_sqrt_d.cwiseProduct(pair.vector()).cast<float>();
+      chain.store.release(pair.data);
+      pair.data = nullptr;
+      pair.rounded = column;
+    }
+}
+
 } // namespace
 
 void give_back_freed_heap()
@@ -169,7 +194,8 @@ void run_chain(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysi
     std::vector<const double*> lock;
     const double reach = lo - 0.5 * (hi - lo);
     for(const Ritz_pair& pair : found)
-      if(pair.value > reach) lock.push_back(pair.data);
+      if(pair.value > reach && pair.data) lock.push_back(pair.data);
+    if(options.float32_vectors) round_settled(p, chain, lo, reach);
     int carried_in_window = 0;
     for(const Ritz_pair& pair : carry)
     {
@@ -319,8 +345,10 @@ void join_at(const Standard_eigenproblem& p, double split, double tolerance, Rit
 {
   std::vector<std::size_t> near;
   for(std::size_t i = 0; i < pairs.size(); ++i)
-    if(std::abs(pairs[i].value - split) <= 0.05 * split) near.push_back(i);
+    if(std::abs(pairs[i].value - split) <= join_reach * split) near.push_back(i);
   if(near.size() < 2) return;
+  for(std::size_t i : near) // `round_settled` keeps these double
+    if(!pairs[i].data) throw Numerical_failure("spectrum slicing: a vector needed to join two chains was rounded");
   const Eigen::Index n = p.d.size(), k = static_cast<Eigen::Index>(near.size());
   Eigen::MatrixXd Y(n, k);
   for(Eigen::Index j = 0; j < k; ++j) Y.col(j) = pairs[near[j]].vector();

@@ -36,7 +36,7 @@ typedef internal::Scalar_eigenproblem Scalar_problem;
 struct Solved
 {
   Eigen::VectorXd values;    // of the mesh as given
-  Eigen::MatrixXd functions; // mass-orthonormal, full size
+  Eigenfunction_matrix functions; // mass-orthonormal, full size
   double max_residual = 0;
   double complete_below = std::numeric_limits<double>::infinity(); // of the mesh as given
   Completeness_check check;
@@ -45,10 +45,13 @@ struct Solved
 
 // The `count` lowest pairs of each problem, solved together: the windows of both
 // problems share the eigensolver's threads.
+// With `precision` float32 the eigensolver rounds the vectors it has finished with while it
+// works on the others, so the set-up's peak memory holds them at half size too.
 std::vector<Solved> solve(const std::vector<std::pair<const Scalar_problem*, int>>& problems, const Basis_options& options,
-                          double progress_start, double progress_span)
+                          Eigenfunction_precision precision, double progress_start, double progress_span)
 {
   Eigensolver_options eigen_options = internal::eigensolver_options(options);
+  eigen_options.float32_vectors = precision == Eigenfunction_precision::float32;
   if(options.progress)
     eigen_options.progress = [&](const Eigensolver_progress& e) {
       const double f = e.wanted > 0 ? std::min(1., double(e.converged) / e.wanted) : 1.;
@@ -64,7 +67,10 @@ std::vector<Solved> solve(const std::vector<std::pair<const Scalar_problem*, int
     const Scalar_problem& p = *problems[i].first;
     Solved& s = solved[i];
     s.values = pairs[i].values / p.area;
-    s.functions = p.expand(std::move(pairs[i].vectors), 1 / std::sqrt(p.area));
+    const double scale = 1 / std::sqrt(p.area);
+    s.functions = eigen_options.float32_vectors
+                      ? Eigenfunction_matrix(p.expand(std::move(pairs[i].vectors_float32), scale))
+                      : Eigenfunction_matrix(p.expand(std::move(pairs[i].vectors), scale));
     s.max_residual = pairs[i].residuals.size() ? pairs[i].residuals.maxCoeff() : 0.;
     s.complete_below = pairs[i].complete_below / p.area;
     s.check = pairs[i].completeness;
@@ -164,7 +170,7 @@ Eigenfield_basis::Eigenfield_basis(std::shared_ptr<const Hodge_solver> solver, c
     if(exact_count != exact_done) problems.push_back({&exact, exact_count});
     if(coexact_count != coexact_done) problems.push_back({&coexact, coexact_count});
     const auto start = std::chrono::steady_clock::now();
-    std::vector<Solved> solved = solve(problems, options, round == 0 ? 0. : 0.9, round == 0 ? 0.9 : 0.05);
+    std::vector<Solved> solved = solve(problems, options, request.precision, round == 0 ? 0. : 0.9, round == 0 ? 0.9 : 0.05);
     const double seconds = seconds_since(start);
     double thread_seconds = 0;
     for(const Solved& s : solved) thread_seconds += s.thread_seconds;
@@ -211,9 +217,9 @@ Eigenfield_basis::Eigenfield_basis(std::shared_ptr<const Hodge_solver> solver, c
   }
 
   exact_values_ = exact_solved.values;
-  exact_functions_ = Eigenfunction_matrix(std::move(exact_solved.functions));
+  exact_functions_ = std::move(exact_solved.functions);
   coexact_values_ = coexact_solved.values;
-  coexact_functions_ = Eigenfunction_matrix(std::move(coexact_solved.functions));
+  coexact_functions_ = std::move(coexact_solved.functions);
   report_.max_residual = std::max(exact_solved.max_residual, coexact_solved.max_residual);
   report_.exact_complete_below = exact_solved.complete_below;
   report_.coexact_complete_below = coexact_solved.complete_below;

@@ -76,22 +76,39 @@ Scalar_eigenproblem coexact_problem(const Operator_matrices& ops, double area)
 
 } // namespace
 
+namespace {
+
 // Column by column: the basis is large, and rows of a column-major matrix are far apart.
-Eigen::MatrixXd Scalar_eigenproblem::expand(Eigen::MatrixXd X, double factor) const
+template <class Matrix>
+Matrix expand_columns(const Scalar_eigenproblem& p, Matrix X, double factor)
 {
-  if(unknowns.empty())
+  typedef typename Matrix::Scalar Scalar;
+  if(p.unknowns.empty())
   {
-    // Not `return X *= factor`: that returns a reference, which copies the basis (the
-    // bunny's 500 coexact functions, 0.42 GB, held twice at the end of the set-up).
-    X *= factor;
+    // In place, and not `return X *= factor`: that returns a reference, which copies the
+    // basis (the bunny's 500 coexact functions, 0.42 GB, held twice at the end of the set-up).
+    for(Eigen::Index j = 0; j < X.cols(); ++j) X.col(j) = (X.col(j).template cast<double>() * factor).template cast<Scalar>();
     return X;
   }
-  Eigen::MatrixXd Y;
-  resize_in_huge_pages(Y, full_size, X.cols());
+  Matrix Y;
+  resize_in_huge_pages(Y, p.full_size, X.cols());
   Y.setZero();
   for(Eigen::Index j = 0; j < X.cols(); ++j)
-    for(std::size_t i = 0; i < unknowns.size(); ++i) Y(unknowns[i], j) = factor * X(static_cast<Eigen::Index>(i), j);
+    for(std::size_t i = 0; i < p.unknowns.size(); ++i)
+      Y(p.unknowns[i], j) = static_cast<Scalar>(factor * X(static_cast<Eigen::Index>(i), j));
   return Y;
+}
+
+} // namespace
+
+Eigen::MatrixXd Scalar_eigenproblem::expand(Eigen::MatrixXd X, double factor) const
+{
+  return expand_columns(*this, std::move(X), factor);
+}
+
+Eigen::MatrixXf Scalar_eigenproblem::expand(Eigen::MatrixXf X, double factor) const
+{
+  return expand_columns(*this, std::move(X), factor);
 }
 
 Scalar_eigenproblem scalar_eigenproblem(const Operator_matrices& ops, Eigenfield_type type, double area)

@@ -174,6 +174,69 @@ TEST(Eigensolver, SpectrumSlicingAgreesWithDenseAcrossManyWindows)
     }
 }
 
+TEST(Eigensolver, VectorsReturnedInFloat32AreTheDoubleVectorsRounded)
+{
+  // With `float32_vectors` a chain rounds its converged vectors once no later window or join
+  // needs them (the finished part of the basis at half size while the rest is solved).
+  // Truth: a dense solve of the same matrices.  The rounded vectors cannot meet 1e-10
+  // residuals, but their Rayleigh quotients can -- rounding moves a quotient only to second
+  // order -- and they stay D-orthonormal to float32 accuracy.  On one thread the windows are
+  // the double solve's, so each entry is that solve's rounded to nearest -- give or take
+  // roundoff at the solver's tolerance: the store reuses columns given back, and the locked
+  // vectors then fall into other runs, summed in another order (measured: 7e-12).
+  Mesh jittered = make_icosphere(3);
+  jitter_vertices(jittered, 0.1, 7);
+  for(int kind = 0; kind < 2; ++kind)
+  {
+    const Vertex_problem p = kind == 0 ? vertex_problem(jittered) : edge_problem(jittered);
+    const int count = 150;
+    TVF::Eigensolver_options dense;
+    dense.dense_size = 4000;
+    const TVF::Eigenpairs reference = TVF::lowest_eigenpairs(p.A, p.d, count, p.kernel, dense);
+    for(int threads : {1, 2, 3})
+    {
+      SCOPED_TRACE(std::string(kind == 0 ? "vertex" : "edge") + ", threads " + std::to_string(threads));
+      TVF::Eigensolver_options sliced;
+      sliced.allow_dense = false;
+      sliced.slice_size = 20; // windows of 20: most vectors are rounded before the end
+      sliced.threads = threads;
+      sliced.float32_vectors = true;
+      const TVF::Eigenpairs a = TVF::lowest_eigenpairs(p.A, p.d, count, p.kernel, sliced);
+      ASSERT_EQ(a.vectors.size(), 0);
+      ASSERT_EQ(a.vectors_float32.rows(), p.A.rows());
+      ASSERT_EQ(a.vectors_float32.cols(), count);
+      EXPECT_LT(((a.values - reference.values).array() / reference.values.array()).abs().maxCoeff(), 1e-9);
+      EXPECT_LE(a.residuals.maxCoeff(), 1e-10);
+      EXPECT_TRUE(a.completeness.passed());
+      const Eigen::MatrixXd X = a.vectors_float32.cast<double>();
+      const Eigen::MatrixXd K = X.transpose() * p.d.asDiagonal() * X;
+      // n entries each rounded by 2^-24 relative: inner products move by about 1e-7.
+      EXPECT_LT((K - Eigen::MatrixXd::Identity(count, count)).cwiseAbs().maxCoeff(), 1e-6);
+      const Eigen::VectorXd quotients = (X.transpose() * (p.A * X)).diagonal().cwiseQuotient(K.diagonal());
+      EXPECT_LT(((quotients - reference.values).array() / reference.values.array()).abs().maxCoeff(), 1e-9);
+      if(threads == 1)
+      {
+        sliced.float32_vectors = false;
+        const TVF::Eigenpairs b = TVF::lowest_eigenpairs(p.A, p.d, count, p.kernel, sliced);
+        EXPECT_EQ(b.vectors_float32.size(), 0);
+        const Eigen::ArrayXXd difference = (X - b.vectors).array().abs();
+        const double slack = 1e-9 * b.vectors.cwiseAbs().maxCoeff();
+        EXPECT_LE((difference - b.vectors.array().abs() * std::ldexp(1., -24)).maxCoeff(), slack);
+      }
+    }
+  }
+  // The dense path (a small problem) rounds at the end.
+  const Vertex_problem small = vertex_problem(make_torus(8, 5));
+  TVF::Eigensolver_options options;
+  options.float32_vectors = true;
+  const TVF::Eigenpairs e = TVF::lowest_eigenpairs(small.A, small.d, 12, small.kernel, options);
+  options.float32_vectors = false;
+  const TVF::Eigenpairs f = TVF::lowest_eigenpairs(small.A, small.d, 12, small.kernel, options);
+  ASSERT_EQ(e.vectors_float32.cols(), 12);
+  EXPECT_EQ(e.vectors.size(), 0);
+  EXPECT_TRUE(e.vectors_float32 == f.vectors.cast<float>());
+}
+
 TEST(Eigensolver, SlicingReachesTheToleranceWhereSomeMassesAreTiny)
 {
   // A sphere and a second one 1e-3 as large: masses 1e6 below the others, so the standard

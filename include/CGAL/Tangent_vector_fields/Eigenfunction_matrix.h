@@ -37,6 +37,10 @@ class Eigenfunction_matrix
 public:
   Eigenfunction_matrix() = default;
   explicit Eigenfunction_matrix(Eigen::MatrixXd functions) : double_(std::move(functions)) {}
+  explicit Eigenfunction_matrix(Eigen::MatrixXf functions)
+    : precision_(Eigenfunction_precision::float32), single_(std::move(functions))
+  {
+  }
 
   Eigen::Index rows() const { return precision_ == Eigenfunction_precision::float64 ? double_.rows() : single_.rows(); }
   Eigen::Index cols() const { return precision_ == Eigenfunction_precision::float64 ? double_.cols() : single_.cols(); }

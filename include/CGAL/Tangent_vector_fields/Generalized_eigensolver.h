@@ -67,6 +67,14 @@ struct Eigensolver_options
   /// space) are solved densely (LAPACK) unless this is false.
   bool allow_dense = true;
   int dense_size = 1500;
+  /// Return the vectors rounded to float32 (`Eigenpairs::vectors_float32`; `vectors` is
+  /// then empty), for a basis stored in float32: half the memory of the vectors, during
+  /// the solve as well as after it.  Spectrum slicing rounds each converged vector as soon
+  /// as no later window is kept orthogonal to it and no join between chains needs it;
+  /// the vectors a window works with stay double, so the values, residuals and checks are
+  /// those of the double solve (the residuals reported are the double vectors', before
+  /// rounding).  The dense path rounds at the end.
+  bool float32_vectors = false;
   /// Called after every Rayleigh-Ritz step.
   std::function<void(const Eigensolver_progress&)> progress;
 };
@@ -85,6 +93,8 @@ struct Eigenpairs
 {
   Eigen::VectorXd values;
   Eigen::MatrixXd vectors;
+  /// With `Eigensolver_options::float32_vectors`: the vectors, each entry rounded to float32.
+  Eigen::MatrixXf vectors_float32;
   Eigen::VectorXd residuals;    ///< relative residual of each pair
   int basis_size = 0;           ///< Krylov vectors used
   int operator_applications = 0; ///< columns passed through the shift-invert solve

@@ -9,6 +9,7 @@
 /// exactly the pairs an inertia count says lie in the window.
 
 #include <CGAL/Tangent_vector_fields/Sparse_ldlt_solver.h>
+#include <CGAL/Tangent_vector_fields/internal/Column_store.h>
 #include <CGAL/Tangent_vector_fields/internal/Standard_eigenproblem.h>
 #include <CGAL/Tangent_vector_fields/internal/huge_pages.h>
 
@@ -25,45 +26,6 @@ namespace CGAL {
 namespace Tangent_vector_fields {
 namespace internal {
 
-/// Where the converged vectors of a chain of windows live: columns of large blocks mapped
-/// from the system in huge pages (a fresh allocation per vector faulted its pages in one by one: 137k of the
-/// 192k page faults of the bunny's basis).  A block is freed once all its columns are
-/// given back.  Addresses stay valid until then.
-class Vector_store
-{
-public:
-  /// A new column holding `v`.
-  double* add(const Eigen::Ref<const Eigen::VectorXd>& v);
-  /// A run of adjacent new columns (uninitialised): its first column and its length.
-  typedef std::pair<double*, Eigen::Index> Run;
-  /// `count` new columns of `rows` entries, as few runs as the blocks allow (a window's
-  /// Ritz vectors are computed straight into them: a buffer of their size per chain was
-  /// 83 MB at the bunny's 104k edges).
-  std::vector<Run> add_columns(Eigen::Index rows, Eigen::Index count);
-  /// Gives `column` back; false if it is not one of this store's.  The last column added
-  /// to a block is reused by the next `add`.
-  bool release(const double* column);
-
-private:
-  // 64 columns: a few percent of the basis per block, so that the peak memory while the
-  // pairs are copied out stays near one copy of the basis.
-  static constexpr Eigen::Index block_columns = 64;
-  struct Block
-  {
-    Block(Eigen::Index rows, Eigen::Index capacity)
-      : memory(static_cast<std::size_t>(rows * capacity)), rows(rows), capacity(capacity)
-    {
-    }
-    Mapped_doubles memory;
-    Eigen::Index rows, capacity, used = 0, live = 0;
-    bool holds(const double* column) const
-    {
-      return column >= memory.data() && column < memory.data() + rows * capacity;
-    }
-  };
-  std::vector<std::unique_ptr<Block>> blocks_;
-};
-
 /// A converged pair with its true residual and the tolerance it met.
 struct Ritz_pair
 {
@@ -71,6 +33,9 @@ struct Ritz_pair
   double* data;      ///< a column of a `Vector_store`: the standard form (`D^1/2 x`), unit length
   Eigen::Index size; ///< of the vector
   double residual, tolerance;
+  /// Once no window needs the vector in double (`Eigensolver_options::float32_vectors`): a
+  /// column of a `Column_store<float>`, the original variables (`x`) rounded; `data` is then null.
+  float* rounded = nullptr;
   Eigen::Map<Eigen::VectorXd> vector() const { return Eigen::Map<Eigen::VectorXd>(data, size); }
 };
 typedef std::vector<Ritz_pair> Ritz_set;

@@ -61,7 +61,8 @@ struct Chain
   double density = 1; ///< estimated eigenvalues per unit of lambda
   std::uint64_t seed = 1;
   // Results.
-  Vector_store store; ///< the vectors of `found`
+  Vector_store store;           ///< the double vectors of `found`
+  Column_store<float> rounded;  ///< those rounded to float32 (`Ritz_pair::rounded`)
   Ritz_set found;
   double end = 0;    ///< every eigenvalue in (lo, end] is in `found`
   int below_end = 0; ///< inertia at `end`
@@ -108,6 +109,12 @@ int split_point(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analys
 /// shift while it was counted, or too little was left).
 double take_over_top(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysis, Chain& victim, int per_window,
                      Chain& taken);
+
+/// Gives the vector of `pair` back to the store of `chain` that holds it; false if neither does.
+inline bool release_vector(Chain& chain, const Ritz_pair& pair)
+{
+  return pair.data ? chain.store.release(pair.data) : chain.rounded.release(pair.rounded);
+}
 
 /// Rayleigh-Ritz on the pairs near `split`, found by two chains that did not lock each other's
 /// vectors out: makes them orthonormal again.

@@ -51,25 +51,27 @@ void resize_in_huge_pages(Matrix& m, Eigen::Index rows, Eigen::Index cols)
   advise_huge_pages(m.data(), sizeof(typename Matrix::Scalar) * static_cast<std::size_t>(m.size()));
 }
 
-/// Doubles mapped straight from the system (Linux: `mmap`, advised to use huge pages), so
-/// that freeing them gives the memory back at once whatever the allocator's settings
-/// (`keep_freed_memory` keeps blocks up to 32 MB in the heap, where the converged vectors of
-/// the rocker arm's eigensolver stayed next to their copy: 0.50 GB peak against 0.36 GB).
-class Mapped_doubles
+/// Entries of type `T` (double, float) mapped straight from the system (Linux: `mmap`,
+/// advised to use huge pages), so that freeing them gives the memory back at once whatever
+/// the allocator's settings (`keep_freed_memory` keeps blocks up to 32 MB in the heap, where
+/// the converged vectors of the rocker arm's eigensolver stayed next to their copy: 0.50 GB
+/// peak against 0.36 GB).
+template <class T>
+class Mapped_array
 {
 public:
-  explicit Mapped_doubles(std::size_t count) : bytes_(sizeof(double) * std::max<std::size_t>(count, 1))
+  explicit Mapped_array(std::size_t count) : bytes_(sizeof(T) * std::max<std::size_t>(count, 1))
   {
 #if defined(__linux__)
     void* p = mmap(nullptr, bytes_, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
     if(p == MAP_FAILED) throw std::bad_alloc();
-    data_ = static_cast<double*>(p);
+    data_ = static_cast<T*>(p);
     advise_huge_pages(data_, bytes_);
 #else
-    data_ = new double[bytes_ / sizeof(double)];
+    data_ = new T[bytes_ / sizeof(T)];
 #endif
   }
-  ~Mapped_doubles()
+  ~Mapped_array()
   {
 #if defined(__linux__)
     munmap(data_, bytes_);
@@ -77,13 +79,13 @@ public:
     delete[] data_;
 #endif
   }
-  Mapped_doubles(const Mapped_doubles&) = delete;
-  Mapped_doubles& operator=(const Mapped_doubles&) = delete;
-  double* data() const { return data_; }
+  Mapped_array(const Mapped_array&) = delete;
+  Mapped_array& operator=(const Mapped_array&) = delete;
+  T* data() const { return data_; }
 
 private:
   std::size_t bytes_;
-  double* data_ = nullptr;
+  T* data_ = nullptr;
 };
 
 } // namespace internal

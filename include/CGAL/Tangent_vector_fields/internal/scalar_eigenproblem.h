@@ -38,6 +38,8 @@ struct Scalar_eigenproblem
   /// Rows of `X` (one per unknown) put back at their positions in the full vector, zero elsewhere.
   /// `factor X` on the full vector (zero off the unknowns).
   Eigen::MatrixXd expand(Eigen::MatrixXd X, double factor = 1) const;
+  /// The same for float32 columns (each entry scaled in double, then rounded once more).
+  Eigen::MatrixXf expand(Eigen::MatrixXf X, double factor = 1) const;
 };
 
 /// Exact problem (`type == exact`): `W phi = lambda M phi` on the vertices in faces, the

@@ -1,0 +1,107 @@
+// Copyright (c) 2026 The Tangent_vector_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TANGENT_VECTOR_FIELDS_INTERNAL_COLUMN_STORE_H
+#define CGAL_TANGENT_VECTOR_FIELDS_INTERNAL_COLUMN_STORE_H
+
+/// \file Column_store.h
+/// Where the converged vectors of a chain of slicing windows live, in double while windows
+/// are kept orthogonal to them, in float32 once rounded for a basis stored in float32.
+
+#include <CGAL/Tangent_vector_fields/internal/huge_pages.h>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Tangent_vector_fields {
+namespace internal {
+
+/// Columns of large blocks mapped from the system in huge pages (a fresh allocation per
+/// vector faulted its pages in one by one: 137k of the 192k page faults of the bunny's
+/// basis).  A block is freed once all its columns are given back.  Addresses stay valid
+/// until then.
+template <class Scalar>
+class Column_store
+{
+public:
+  typedef Eigen::Matrix<Scalar, Eigen::Dynamic, 1> Vector;
+
+  /// A new column holding `v`.
+  Scalar* add(const Eigen::Ref<const Vector>& v)
+  {
+    Scalar* column = add_columns(v.size(), 1).front().first;
+    Eigen::Map<Vector>(column, v.size()) = v;
+    return column;
+  }
+
+  /// A run of adjacent new columns (uninitialised): its first column and its length.
+  typedef std::pair<Scalar*, Eigen::Index> Run;
+
+  /// `count` new columns of `rows` entries, as few runs as the blocks allow (a window's
+  /// Ritz vectors are computed straight into them: a buffer of their size per chain was
+  /// 83 MB at the bunny's 104k edges).
+  std::vector<Run> add_columns(Eigen::Index rows, Eigen::Index count)
+  {
+    std::vector<Run> runs;
+    while(count > 0)
+    {
+      if(blocks_.empty() || !blocks_.back() || blocks_.back()->used == blocks_.back()->capacity ||
+         blocks_.back()->rows != rows)
+        blocks_.push_back(std::make_unique<Block>(rows, block_columns));
+      Block& block = *blocks_.back();
+      const Eigen::Index taken = std::min(count, block.capacity - block.used);
+      runs.emplace_back(block.memory.data() + block.used * rows, taken);
+      block.used += taken;
+      block.live += taken;
+      count -= taken;
+    }
+    return runs;
+  }
+
+  /// Gives `column` back; false if it is not one of this store's.  The last column added
+  /// to a block is reused by the next `add`.
+  bool release(const Scalar* column)
+  {
+    for(std::unique_ptr<Block>& block : blocks_)
+      if(block && block->holds(column))
+      {
+        if(column == block->memory.data() + (block->used - 1) * block->rows) --block->used;
+        if(--block->live == 0) block.reset(); // the next `add` starts a new block if it was the last
+        return true;
+      }
+    return false;
+  }
+
+private:
+  // 64 columns: a few percent of the basis per block, so that the peak memory while the
+  // pairs are copied out stays near one copy of the basis.
+  static constexpr Eigen::Index block_columns = 64;
+  struct Block
+  {
+    Block(Eigen::Index rows, Eigen::Index capacity)
+      : memory(static_cast<std::size_t>(rows * capacity)), rows(rows), capacity(capacity)
+    {
+    }
+    Mapped_array<Scalar> memory;
+    Eigen::Index rows, capacity, used = 0, live = 0;
+    bool holds(const Scalar* column) const
+    {
+      return column >= memory.data() && column < memory.data() + rows * capacity;
+    }
+  };
+  std::vector<std::unique_ptr<Block>> blocks_;
+};
+
+/// The double vectors windows are kept orthogonal to.
+typedef Column_store<double> Vector_store;
+
+} // namespace internal
+} // namespace Tangent_vector_fields
+} // namespace CGAL
+
+#endif
