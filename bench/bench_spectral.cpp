@@ -11,6 +11,8 @@
 // Usage: bench_spectral [data-dir] [--meshes rocker,bunny,armadillo] [--exact N] [--coexact N]
 //                       [--no-sweep] [--no-compression] [--compression-size D]
 //                       [--threads T]  (eigensolver threads; 0: one per core)
+//                       [--float32]  (the set-up stores the eigenfunctions in float32, rounding them
+//                                     while it solves)
 //                       [--default-allocator]  (without keep_freed_memory(), which the tvf tool calls)
 //        bench_spectral --against-slepc [data-dir] [--meshes ...] [--exact N] [--coexact N]
 //                       [--ranks R] [--mpirun CMD] [--slepc-options "..."] [--no-krylov-schur]
@@ -132,6 +134,7 @@ int main(int argc, char** argv)
   std::string which = "rocker,bunny,armadillo";
   int exact = 500, coexact = 500, compression_size = 2000, threads = 0;
   bool sweep = true, compression = true, default_allocator = false, krylov_schur = true;
+  TVF::Eigenfunction_precision precision = TVF::Eigenfunction_precision::float64;
   for(int i = 1; i < argc; ++i)
   {
     if(!std::strcmp(argv[i], "--meshes") && i + 1 < argc) which = argv[++i];
@@ -140,6 +143,7 @@ int main(int argc, char** argv)
     else if(!std::strcmp(argv[i], "--compression-size") && i + 1 < argc) compression_size = std::atoi(argv[++i]);
     else if(!std::strcmp(argv[i], "--threads") && i + 1 < argc) threads = std::atoi(argv[++i]);
     else if(!std::strcmp(argv[i], "--no-sweep")) sweep = false;
+    else if(!std::strcmp(argv[i], "--float32")) precision = TVF::Eigenfunction_precision::float32;
     else if(!std::strcmp(argv[i], "--default-allocator")) default_allocator = true;
     else if(!std::strcmp(argv[i], "--no-compression")) compression = false;
     else if(!std::strcmp(argv[i], "--against-slepc")) against_slepc = true;
@@ -187,8 +191,8 @@ int main(int argc, char** argv)
               "|D^-1/2 (A x - l D x)| / (l |D^1/2 x|);\ncomplete = inertia/expected of the exact and the coexact\n"
               "problem at the last window boundary (Sylvester: eigenvalues below it / pairs found + kernel);\n"
               "peak = largest resident memory of the process during the set-up (GB, the mesh loaded before it\n"
-              "included); basis = eigenfunctions and harmonic fields kept (GB)\n\n",
-              exact, coexact);
+              "included); basis = eigenfunctions and harmonic fields kept (GB); eigenfunctions stored in %s\n\n",
+              exact, coexact, precision == TVF::Eigenfunction_precision::float32 ? "float32" : "double");
   std::printf("%-10s %8s %4s | %7s %7s %7s %7s %8s | %6s %6s | %7s %7s %7s | %9s %s\n", "mesh", "faces", "dimH", "ops",
               "exact", "coexact", "harm.", "set-up", "peak", "basis", "thesis", "target", "speedup", "residual",
               "complete");
@@ -205,7 +209,9 @@ int main(int argc, char** argv)
     const double ops_seconds = seconds_since(start);
     TVF::Basis_options basis_options;
     basis_options.threads = threads;
-    TVF::Eigenfield_basis basis(solver, TVF::Basis_request::per_type(exact, coexact), basis_options);
+    TVF::Basis_request request = TVF::Basis_request::per_type(exact, coexact);
+    request.precision = precision;
+    TVF::Eigenfield_basis basis(solver, request, basis_options);
     const double total = seconds_since(start);
     const double peak = peak_memory_gb();
     const TVF::Basis_report& r = basis.report();

@@ -71,9 +71,11 @@ Row run_package(const TVF::internal::Scalar_eigenproblem& p, int count)
 
 // Both problems of a mesh in one `lowest_eigenpairs_of_each` call, as the spectral basis
 // solves them: one pool of threads for the two.  The outcome holds the seconds and the peak
-// of the call; `values` and `residuals` those of the problems one after the other.
+// of the call; `values` and `residuals` those of the problems one after the other.  With
+// `float32`, the vectors are returned rounded, as for a basis stored in float32 (their
+// residual is then that of the rounded vectors).
 Slepc_outcome run_package_joint(const TVF::internal::Scalar_eigenproblem& exact, int exact_count,
-                                const TVF::internal::Scalar_eigenproblem& coexact, int coexact_count,
+                                const TVF::internal::Scalar_eigenproblem& coexact, int coexact_count, bool float32,
                                 std::vector<Eigen::VectorXd>& values)
 {
   Slepc_outcome outcome;
@@ -81,10 +83,11 @@ Slepc_outcome run_package_joint(const TVF::internal::Scalar_eigenproblem& exact,
   {
     reset_peak_memory();
     const double resident = resident_bytes();
+    TVF::Eigensolver_options options = TVF::internal::eigensolver_options(TVF::Basis_options());
+    options.float32_vectors = float32;
     const auto start = std::chrono::steady_clock::now();
     const std::vector<TVF::Eigenpairs> pairs = TVF::lowest_eigenpairs_of_each(
-        {{exact.A, exact.d, exact_count, exact.kernel}, {coexact.A, coexact.d, coexact_count, coexact.kernel}},
-        TVF::internal::eigensolver_options(TVF::Basis_options()));
+        {{exact.A, exact.d, exact_count, exact.kernel}, {coexact.A, coexact.d, coexact_count, coexact.kernel}}, options);
     outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if(resident >= 0) outcome.peak_bytes = peak_memory_bytes() - resident;
     const TVF::internal::Scalar_eigenproblem* problem[] = {&exact, &coexact};
@@ -94,7 +97,9 @@ Slepc_outcome run_package_joint(const TVF::internal::Scalar_eigenproblem& exact,
       const TVF::Eigenpairs& e = pairs[k];
       values.push_back(e.values);
       for(Eigen::Index i = 0; i < e.values.size(); ++i)
-        residual = std::max(residual, relative_residual(problem[k]->A, problem[k]->d, e.values[i], e.vectors.col(i)));
+        residual = std::max(residual, relative_residual(problem[k]->A, problem[k]->d, e.values[i],
+                                                        float32 ? Eigen::VectorXd(e.vectors_float32.col(i).cast<double>())
+                                                                : Eigen::VectorXd(e.vectors.col(i))));
     }
     outcome.residuals = Eigen::VectorXd::Constant(1, residual);
     outcome.ok = true;
@@ -159,6 +164,7 @@ struct Totals
   std::vector<double> seconds, peaks;
   bool complete = true; // false once the package failed on a problem (no rows to add)
   double joint_seconds = 0, joint_peak = -1; // both problems in one call (NaN: it failed)
+  double float32_seconds = 0, float32_peak = -1; // the same, vectors returned in float32
 
   void add(const std::vector<Row>& rows)
   {
@@ -208,6 +214,10 @@ void print_totals(const std::string& title, const Totals& totals)
                 totals.seconds[best] / totals.seconds[0]);
     if(!std::isnan(totals.joint_seconds))
       std::printf("; / package in one call = %.2f (the spectral basis's way)", totals.seconds[best] / totals.joint_seconds);
+    std::printf("\n  => peak memory, SLEPc best / package in one call = %.2f", totals.peaks[best] / totals.joint_peak);
+    if(!std::isnan(totals.float32_seconds))
+      std::printf("; / package in one call, vectors in float32 = %.2f (%.2f s, peak %.2f GB)",
+                  totals.peaks[best] / totals.float32_peak, totals.float32_seconds, totals.float32_peak / 1e9);
     std::printf("\n");
   }
   else
@@ -351,7 +361,7 @@ int run_all(const Side_by_side_request& request)
     const int exact_count = std::min(std::min(request.exact, exact.available()) + extra_pairs, exact.available());
     const int coexact_count = std::min(std::min(request.coexact, coexact.available()) + extra_pairs, coexact.available());
     std::vector<Eigen::VectorXd> joint_values;
-    const Slepc_outcome joint = run_package_joint(exact, exact_count, coexact, coexact_count, joint_values);
+    const Slepc_outcome joint = run_package_joint(exact, exact_count, coexact, coexact_count, false, joint_values);
     if(joint.ok)
     {
       // Against the one-problem runs' eigenvalues (other random starts, other cuts).
@@ -364,6 +374,17 @@ int run_all(const Side_by_side_request& request)
                   name.c_str(), joint.seconds, joint.peak_bytes / 1e9, joint.residuals[0], difference);
       totals.joint_seconds = joint.seconds;
       totals.joint_peak = joint.peak_bytes;
+      std::vector<Eigen::VectorXd> rounded_values;
+      const Slepc_outcome rounded = run_package_joint(exact, exact_count, coexact, coexact_count, true, rounded_values);
+      if(rounded.ok)
+        std::printf("%s, the same with the vectors returned in float32: %.2f s, peak %.3f GB, residual of the rounded "
+                    "vectors %.1e\n",
+                    name.c_str(), rounded.seconds, rounded.peak_bytes / 1e9, rounded.residuals[0]);
+      else
+        std::printf("%s, the same with the vectors returned in float32 FAILED: %s\n", name.c_str(), rounded.error.c_str());
+      totals.float32_seconds = rounded.ok ? rounded.seconds : std::numeric_limits<double>::quiet_NaN();
+      totals.float32_peak = rounded.peak_bytes;
+      all_right &= rounded.ok;
     }
     else
     {
@@ -387,6 +408,8 @@ int run_all(const Side_by_side_request& request)
     }
     all.joint_seconds += totals.joint_seconds;
     all.joint_peak = std::max(all.joint_peak, totals.joint_peak);
+    all.float32_seconds += totals.float32_seconds;
+    all.float32_peak = std::max(all.float32_peak, totals.float32_peak);
   }
   if(request.meshes.size() > 1) print_totals("\nall meshes, exact + coexact", all);
   return all_right ? 0 : 1;

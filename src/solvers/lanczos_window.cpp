@@ -27,13 +27,16 @@ namespace {
 // a fraction of a rerun of the window.  (Images of all the Ritz vectors at the window's
 // shift add directions from all over the spectrum, whose combinations made spurious
 // Ritz values inside the window: 62 for 47.)  `Y` holds the window's pairs first, then
-// the carried ones; `deflate` removes the kernel and the locked vectors.  Returns false if
-// it did not succeed.
+// the carried ones; `deflate` removes the kernel and the locked vectors.  The shifted
+// matrix `K` and its factor `solver` are the window's, overwritten: a factor of their own
+// was the largest transient of the set-up (with a copy of `Y`: 0.1 GB at the bunny's 104k
+// edges, where the peak memory was reached during a polish).  Returns false if it did not
+// succeed.
 template <class Deflate>
 bool polish(const Standard_eigenproblem& p, const Window& w, const Eigen::Ref<const Eigen::MatrixXd>& Y,
             const Eigen::VectorXd& values, const Eigen::VectorXd& residuals, const Eigen::VectorXd& tolerances,
-            const Deflate& deflate, const Sparse_ldlt_solver& window_solver, double tolerance, Vector_store& store,
-            Ritz_set& window, Ritz_set& carry, int& applications)
+            const Deflate& deflate, Eigen::SparseMatrix<double>& K, Sparse_ldlt_solver& solver, double tolerance,
+            Vector_store& store, Ritz_set& window, Ritz_set& carry, int& applications)
 {
   const Eigen::Index n = Y.rows(), k = Y.cols();
   std::vector<Eigen::Index> failed;
@@ -45,11 +48,8 @@ bool polish(const Standard_eigenproblem& p, const Window& w, const Eigen::Ref<co
       if(residuals[i] / tolerances[i] > residuals[worst] / tolerances[worst]) worst = i;
     }
   if(failed.empty() || failed.size() > 8) return false;
-  Sparse_ldlt_solver solver;
-  solver.copy_analysis(window_solver);
   // The shift a thousandth of the mean eigenvalue spacing of the window away from the
   // Ritz value: exactly at it, the pivots come near zero (measured: 2.5e-15 relative).
-  Eigen::SparseMatrix<double> K;
   const double spacing = (w.hi - w.lo) / std::max(1, w.wanted);
   for(double offset = 1e-3 * spacing;; offset *= 10)
   {
@@ -127,7 +127,7 @@ bool polish(const Standard_eigenproblem& p, const Window& w, const Eigen::Ref<co
 // One block Lanczos run at shift `w.sigma` on the complement of `locked` (and the
 // kernel).  Collects the converged pairs with eigenvalue in (lo, hi] into `window`
 // (exactly `wanted` of them) and those in (hi, carry_hi) into `carry`.
-void lanczos_window(const Standard_eigenproblem& p, const Eigen::SparseMatrix<double>& K, const Sparse_ldlt_solver& solver,
+void lanczos_window(const Standard_eigenproblem& p, Eigen::SparseMatrix<double>& K, Sparse_ldlt_solver& solver,
                     const Window& w, const Locked_columns& locked, const Eigensolver_options& options,
                     std::mt19937_64& generator, Lanczos_workspace& space, Ritz_set& window, Ritz_set& carry,
                     Vector_store& store, int& applications, int& basis_used, const std::function<void(int)>& report)
@@ -290,18 +290,17 @@ void lanczos_window(const Standard_eigenproblem& p, const Eigen::SparseMatrix<do
         basis_used = std::max(basis_used, complete);
         return;
       }
-      Eigen::MatrixXd Y; // rare: a copy for polishing
+      // Polishing works on the window's vectors while their store columns are given back
+      // (the polished ones take them): they are copied into the Krylov basis, whose work is
+      // done (count <= complete columns).
       if(indefinite && !refine)
-      {
-        Y.resize(n, count);
-        for(Eigen::Index i = 0; i < count; ++i) Y.col(i) = Eigen::Map<Eigen::VectorXd>(columns[static_cast<std::size_t>(i)], n);
-      }
+        for(Eigen::Index i = 0; i < count; ++i) Q.col(i) = Eigen::Map<Eigen::VectorXd>(columns[static_cast<std::size_t>(i)], n);
       for(Eigen::Index i = count - 1; i >= 0; --i) give_back(i);
       if(indefinite && !refine)
       {
         // The estimate holds for the inexact operator only.
-        if(polish(p, w, Y, values, residuals, tolerances, deflate, solver, options.tolerance, store, window, carry,
-                  applications))
+        if(polish(p, w, Q.leftCols(count), values, residuals, tolerances, deflate, K, solver, options.tolerance, store,
+                  window, carry, applications))
         {
           basis_used = std::max(basis_used, complete);
           return;

@@ -220,7 +220,10 @@ void run_chain(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysi
     {
       shifted.factor_at(w.sigma);
       if(shifted.solver.smallest_relative_pivot() < 1e-14) shifted.factor_at(w.sigma += 1e-6 * (hi - lo));
+      int attempts = 0;
       auto run_window = [&](const Eigensolver_options& o) {
+        // A polish in the attempt before may have left another shift factored.
+        if(attempts++ > 0) shifted.factor_at(w.sigma);
         window = Ritz_set();
         new_carry = Ritz_set();
         lanczos_window(p, shifted.K, shifted.solver, w, locked, o, generator, space, window, new_carry,
