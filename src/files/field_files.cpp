@@ -170,8 +170,12 @@ public:
   {
     const std::size_t end = text_.find("</" + name, pos_);
     if(end == std::string::npos) throw Invalid_input("VTK PolyData: missing </" + name + ">");
+    const std::size_t close = text_.find('>', end);
+    // Not `find + 1` unchecked: npos + 1 is 0, which restarted the scan at the top, forever
+    // (fuzz_vtp: a file ending inside an end tag hung the reader).
+    if(close == std::string::npos) throw Invalid_input("VTK PolyData: unterminated </" + name + ">");
     std::string body = text_.substr(pos_, end - pos_);
-    pos_ = text_.find('>', end) + 1;
+    pos_ = close + 1;
     return body;
   }
 

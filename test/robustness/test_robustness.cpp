@@ -369,6 +369,15 @@ TEST(FieldFiles, RawFieldCountBeyondItsNumbersIsRefusedWithoutAllocatingIt)
   EXPECT_EQ(TVF::read_raw_field(good).vectors.size(), 2u);
 }
 
+// fuzz_vtp: a file that ends inside an end tag sent the reader back to its first byte, forever.
+TEST(FieldFiles, VtkFileEndingInsideAnEndTagIsRefused)
+{
+  const auto read = [](std::istream& in) { TVF::read_vtk_polydata(in); };
+  const std::string whole = triangle_vtp("0 1 2", "3");
+  const std::size_t cut = whole.find("</DataArray>") + std::string("</DataArray").size();
+  EXPECT_EQ(field_file_error(whole.substr(0, cut), read), "VTK PolyData: unterminated </DataArray>");
+}
+
 // fuzz_vtp: a connectivity entry of 9.2e15 was cast to int (undefined behaviour); 1.5 was
 // taken as point 1, "3x" as 3 points.
 TEST(FieldFiles, VtkIndicesAndCountsMustBeWholeNumbers)
