@@ -122,6 +122,58 @@ bool polish(const Standard_eigenproblem& p, const Window& w, const Eigen::Ref<co
   return true;
 }
 
+struct Restart_sizes
+{
+  int limit, keep;
+};
+
+// Columns of a window's Krylov basis: at most `limit`, where a restart keeps `keep` (about
+// 1.1 per wanted pair, enough to hold the window's pairs and a margin next to them), unless
+// the run needs no more than `max_basis` anyway.
+Restart_sizes restart_sizes(int wanted, int b, int max_basis, double per_pair)
+{
+  if(!(per_pair > 0)) return {max_basis, max_basis};
+  const int limit = static_cast<int>(std::ceil(std::max(1.0, per_pair) * wanted)) + 8 * b;
+  if(limit >= max_basis) return {max_basis, max_basis};
+  return {limit, std::min(wanted + wanted / 10 + 2 * b, limit - 2 * b)};
+}
+
+// Cuts the Krylov basis `Q` (its first `complete` columns and the next block) to the `keep`
+// Ritz vectors whose values `theta` (of shift-and-invert: 1 / (lambda - sigma)) are largest
+// in magnitude, the eigenvectors of `T` giving them, followed by the next block: the
+// thick-restart form, where `H` is diagonal on the kept vectors and the next block is
+// coupled to each of them.  Returns the new count of complete columns (`keep`).
+int thick_restart(Eigen::MatrixXd& Q, Eigen::MatrixXd& H, const Eigen::MatrixXd& T, const Eigen::VectorXd& theta,
+                  int complete, int keep, int b)
+{
+  std::vector<int> order(static_cast<std::size_t>(complete));
+  for(int i = 0; i < complete; ++i) order[static_cast<std::size_t>(i)] = i;
+  std::partial_sort(order.begin(), order.begin() + keep, order.end(),
+                    [&](int x, int y) { return std::abs(theta[x]) > std::abs(theta[y]); });
+  Eigen::MatrixXd S(complete, keep);
+  Eigen::VectorXd kept(keep);
+  for(int j = 0; j < keep; ++j)
+  {
+    S.col(j) = T.col(order[static_cast<std::size_t>(j)]);
+    kept[j] = theta[order[static_cast<std::size_t>(j)]];
+  }
+  // In place, a band of rows at a time: no n x keep temporary.
+  const Eigen::Index n = Q.rows(), band = 1024;
+  Eigen::MatrixXd rows;
+  for(Eigen::Index r0 = 0; r0 < n; r0 += band)
+  {
+    const Eigen::Index h = std::min(band, n - r0);
+    rows.noalias() = Q.block(r0, 0, h, complete) * S;
+    Q.block(r0, 0, h, keep) = rows;
+  }
+  Q.middleCols(keep, b) = Q.middleCols(complete, b); // keep + b <= complete: no overlap
+  const Eigen::MatrixXd coupling = H.block(complete, 0, b, complete) * S;
+  H.topLeftCorner(complete + b, complete + b).setZero();
+  H.diagonal().head(keep) = kept;
+  H.block(keep, 0, b, keep) = coupling;
+  return keep;
+}
+
 } // namespace
 
 // One block Lanczos run at shift `w.sigma` on the complement of `locked` (and the
@@ -138,6 +190,13 @@ void lanczos_window(const Standard_eigenproblem& p, Eigen::SparseMatrix<double>&
   const int wanted = w.wanted;
   const int free_dimension = static_cast<int>(n) - c - static_cast<int>(locked.count());
   const int max_basis = std::min(free_dimension, std::max(6 * wanted + 8 * b, wanted + 40 * b));
+  // Thick restart: past `basis_limit` columns, the Krylov basis is cut to the Ritz vectors
+  // nearest the shift (`restart_keep` of them) and grown again from its last block.
+  const Restart_sizes sizes = restart_sizes(wanted, b, max_basis, options.restart_per_pair);
+  const int basis_limit = sizes.limit, restart_keep = sizes.keep;
+  const bool restarts = basis_limit < max_basis;
+  const long budget = restarts ? 3L * max_basis : max_basis; // columns generated, restarts included
+  long generated = b;
   auto deflate = [&](Eigen::MatrixXd& Z) {
     p.deflate(Z);
     locked.project_out(Z);
@@ -167,7 +226,7 @@ void lanczos_window(const Standard_eigenproblem& p, Eigen::SparseMatrix<double>&
     return X;
   };
 
-  space.reserve(n, max_basis + b);
+  space.reserve(n, basis_limit + b);
   Eigen::MatrixXd& Q = space.Q;
   Eigen::MatrixXd& H = space.H;
   // The start block through the operator twice: a random vector has parts of size
@@ -215,15 +274,19 @@ void lanczos_window(const Standard_eigenproblem& p, Eigen::SparseMatrix<double>&
     Q.middleCols(m, b) = next;
     complete = m;
     m += b;
-    const bool exhausted = m > max_basis || complete >= free_dimension;
-    if(complete < next_check && !exhausted) continue;
+    generated += b;
+    const bool exhausted = generated > budget || complete >= free_dimension;
+    const bool full = m > basis_limit;
+    if(complete < next_check && !exhausted && !full) continue;
 
     // Rayleigh-Ritz; theta = 1 / (lambda - sigma).
     Eigen::MatrixXd T = H.topLeftCorner(complete, complete);
     T = (T + T.transpose()).eval() / 2;
     Eigen::VectorXd theta;
     symmetric_eigen(T, theta);
-    const Eigen::MatrixXd coupling = H.block(complete, complete - b, b, b) * T.bottomRows(b);
+    // The next block is coupled to the last block only, or after a restart to every kept
+    // Ritz vector (until a block is added).
+    const Eigen::MatrixXd coupling = H.block(complete, 0, b, complete) * T;
     // If op y = theta y + r with r = Q_next c, then in standard form
     // (D^-1/2 A D^-1/2 - lambda) y = -(1/theta) D^-1/2 K D^-1/2 r: the residual of every
     // Ritz pair from one small Gram matrix, P^T P with P = D^-1/2 K D^-1/2 Q_next.
@@ -313,8 +376,14 @@ void lanczos_window(const Standard_eigenproblem& p, Eigen::SparseMatrix<double>&
     {
       std::ostringstream msg;
       msg << "spectrum slicing: " << in_window.size() << " of " << wanted << " eigenvalues in (" << w.lo << ", "
-          << w.hi << "] converged within the Krylov basis limit " << max_basis;
+          << w.hi << "] converged within " << (restarts ? "the operator applications allowed, " : "the Krylov basis limit ")
+          << budget;
       throw Numerical_failure(msg.str());
+    }
+    if(full)
+    {
+      complete = thick_restart(Q, H, T, theta, complete, restart_keep, b);
+      m = complete + b;
     }
     next_check = std::min(max_basis, complete + std::max(2 * b, (wanted - static_cast<int>(in_window.size())) / 2 + b));
   }

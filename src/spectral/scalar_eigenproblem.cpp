@@ -127,6 +127,8 @@ Eigensolver_options eigensolver_options(const Basis_options& options)
   Eigensolver_options e;
   e.tolerance = options.tolerance;
   e.block_size = options.block_size;
+  e.restart_per_pair = options.restart_per_pair;
+  e.threads = options.threads;
   e.seed = options.seed;
   return e;
 }

@@ -174,6 +174,52 @@ TEST(Eigensolver, SpectrumSlicingAgreesWithDenseAcrossManyWindows)
     }
 }
 
+TEST(Eigensolver, ThickRestartsCapTheKrylovBasisAndKeepTheSpectrum)
+{
+  // Windows of ~30 pairs restarted at 1 vector per pair (the tightest setting, 8 blocks of
+  // room): the Krylov basis must stay below the unrestarted one's, and the pairs must still
+  // be the dense solve's, with residuals computed here from A and D, D-orthonormal and
+  // complete by the inertia.  The perfect icosphere's multiplicities of up to 5 also take
+  // the retry with wider blocks through restarts.
+  Mesh sphere = make_icosphere(3);
+  Mesh jittered = make_icosphere(3);
+  jitter_vertices(jittered, 0.1, 11);
+  for(const Mesh* mesh : {&sphere, &jittered})
+    for(int kind = 0; kind < 2; ++kind)
+    {
+      const Vertex_problem p = kind == 0 ? vertex_problem(*mesh) : edge_problem(*mesh);
+      const int count = 150;
+      TVF::Eigensolver_options dense;
+      dense.dense_size = 4000;
+      const TVF::Eigenpairs reference = TVF::lowest_eigenpairs(p.A, p.d, count, p.kernel, dense);
+      for(int threads : {1, 2})
+      {
+        SCOPED_TRACE(std::string(mesh == &sphere ? "sphere " : "jittered ") + (kind == 0 ? "vertex" : "edge") +
+                     ", threads " + std::to_string(threads));
+        TVF::Eigensolver_options options;
+        options.allow_dense = false;
+        options.slice_size = 30;
+        options.threads = threads;
+        options.restart_per_pair = 0;
+        const TVF::Eigenpairs unrestarted = TVF::lowest_eigenpairs(p.A, p.d, count, p.kernel, options);
+        options.restart_per_pair = 1;
+        const TVF::Eigenpairs a = TVF::lowest_eigenpairs(p.A, p.d, count, p.kernel, options);
+        ASSERT_EQ(a.values.size(), count);
+        EXPECT_LT(a.basis_size, unrestarted.basis_size);
+        EXPECT_LT(((a.values - reference.values).array() / reference.values.array()).abs().maxCoeff(), 1e-9);
+        // |D^-1/2 (A x - l D x)| / (l |D^1/2 x|), the tolerance's definition.
+        const Eigen::MatrixXd R = p.A * a.vectors - p.d.asDiagonal() * a.vectors * a.values.asDiagonal();
+        for(int i = 0; i < count; ++i)
+          EXPECT_LE(p.d.cwiseSqrt().cwiseInverse().cwiseProduct(R.col(i)).norm() /
+                        (a.values[i] * p.d.cwiseSqrt().cwiseProduct(a.vectors.col(i)).norm()),
+                    1e-10)
+              << i;
+        expect_orthonormal(a.vectors, p.d);
+        EXPECT_TRUE(a.completeness.passed());
+      }
+    }
+}
+
 TEST(Eigensolver, VectorsReturnedInFloat32AreTheDoubleVectorsRounded)
 {
   // With `float32_vectors` a chain rounds its converged vectors once no later window or join
@@ -183,7 +229,10 @@ TEST(Eigensolver, VectorsReturnedInFloat32AreTheDoubleVectorsRounded)
   // order -- and they stay D-orthonormal to float32 accuracy.  On one thread the windows are
   // the double solve's, so each entry is that solve's rounded to nearest -- give or take
   // roundoff at the solver's tolerance: the store reuses columns given back, and the locked
-  // vectors then fall into other runs, summed in another order (measured: 7e-12).
+  // vectors then fall into other runs, summed in another order (measured: 7e-12).  That
+  // comparison runs unrestarted: a thick restart picks the Ritz vectors it keeps by their
+  // distance to the shift, and such roundoff can swap two at equal distance on either side,
+  // after which the runs differ by the solver's tolerance and in the signs of the vectors.
   Mesh jittered = make_icosphere(3);
   jitter_vertices(jittered, 0.1, 7);
   for(int kind = 0; kind < 2; ++kind)
@@ -201,6 +250,7 @@ TEST(Eigensolver, VectorsReturnedInFloat32AreTheDoubleVectorsRounded)
       sliced.slice_size = 20; // windows of 20: most vectors are rounded before the end
       sliced.threads = threads;
       sliced.float32_vectors = true;
+      if(threads == 1) sliced.restart_per_pair = 0;
       const TVF::Eigenpairs a = TVF::lowest_eigenpairs(p.A, p.d, count, p.kernel, sliced);
       ASSERT_EQ(a.vectors.size(), 0);
       ASSERT_EQ(a.vectors_float32.rows(), p.A.rows());

@@ -19,6 +19,7 @@ using namespace tvf_test;
 
 #include <CGAL/Tangent_vector_fields/Spectral_basis.h>
 #include <CGAL/Tangent_vector_fields/face_field_io.h>
+#include <CGAL/Tangent_vector_fields/internal/scalar_eigenproblem.h>
 
 #include <cstdio>
 #include <fstream>
@@ -323,4 +324,21 @@ TEST(SpectralBasis, ProgressIsReportedAndPropertyMapsWork)
   TVF::filter_tangent_field(torus, field, TVF::Spectral_filter::low_pass(0.0), filtered,
                             TVF::parameters::number_of_eigenfields(30));
   for(Face_index f : torus.faces()) EXPECT_LT(std::sqrt((filtered[f] - field[f]).squared_length()), 1e-9);
+}
+
+TEST(SpectralBasis, EveryEigensolverSettingOfTheBasisOptionsReachesTheEigensolver)
+{
+  // Basis_options::threads once went nowhere: the basis always ran on every core.
+  TVF::Basis_options options;
+  options.tolerance = 3e-9;
+  options.block_size = 7;
+  options.restart_per_pair = 2.5;
+  options.seed = 99;
+  options.threads = 3;
+  const TVF::Eigensolver_options e = TVF::internal::eigensolver_options(options);
+  EXPECT_EQ(e.tolerance, 3e-9);
+  EXPECT_EQ(e.block_size, 7);
+  EXPECT_EQ(e.restart_per_pair, 2.5);
+  EXPECT_EQ(e.seed, 99u);
+  EXPECT_EQ(e.threads, 3);
 }
