@@ -11,6 +11,7 @@
 // Usage: bench_spectral [data-dir] [--meshes rocker,bunny,armadillo] [--exact N] [--coexact N]
 //                       [--no-sweep] [--no-compression] [--compression-size D]
 //                       [--threads T]  (eigensolver threads; 0: one per core)
+//                       [--restart-per-pair R]  (Krylov vectors per pair before a window restarts; 0: never)
 //                       [--float32]  (the set-up stores the eigenfunctions in float32, rounding them
 //                                     while it solves)
 //                       [--default-allocator]  (without keep_freed_memory(), which the tvf tool calls)
@@ -133,6 +134,7 @@ int main(int argc, char** argv)
   std::string dir = TVF_SHARED_DATA_DIR;
   std::string which = "rocker,bunny,armadillo";
   int exact = 500, coexact = 500, compression_size = 2000, threads = 0;
+  double restart_per_pair = TVF::Basis_options().restart_per_pair;
   bool sweep = true, compression = true, default_allocator = false, krylov_schur = true;
   TVF::Eigenfunction_precision precision = TVF::Eigenfunction_precision::float64;
   for(int i = 1; i < argc; ++i)
@@ -142,6 +144,7 @@ int main(int argc, char** argv)
     else if(!std::strcmp(argv[i], "--coexact") && i + 1 < argc) coexact = std::atoi(argv[++i]);
     else if(!std::strcmp(argv[i], "--compression-size") && i + 1 < argc) compression_size = std::atoi(argv[++i]);
     else if(!std::strcmp(argv[i], "--threads") && i + 1 < argc) threads = std::atoi(argv[++i]);
+    else if(!std::strcmp(argv[i], "--restart-per-pair") && i + 1 < argc) restart_per_pair = std::atof(argv[++i]);
     else if(!std::strcmp(argv[i], "--no-sweep")) sweep = false;
     else if(!std::strcmp(argv[i], "--float32")) precision = TVF::Eigenfunction_precision::float32;
     else if(!std::strcmp(argv[i], "--default-allocator")) default_allocator = true;
@@ -174,6 +177,8 @@ int main(int argc, char** argv)
     slepc_request.mpirun = mpirun;
     slepc_request.extra_options = slepc_options;
     slepc_request.krylov_schur = krylov_schur;
+    slepc_request.package.threads = threads;
+    slepc_request.package.restart_per_pair = restart_per_pair;
     return tvf_bench::run_against_slepc(slepc_request);
 #else
     (void)ranks;
@@ -191,8 +196,9 @@ int main(int argc, char** argv)
               "|D^-1/2 (A x - l D x)| / (l |D^1/2 x|);\ncomplete = inertia/expected of the exact and the coexact\n"
               "problem at the last window boundary (Sylvester: eigenvalues below it / pairs found + kernel);\n"
               "peak = largest resident memory of the process during the set-up (GB, the mesh loaded before it\n"
-              "included); basis = eigenfunctions and harmonic fields kept (GB); eigenfunctions stored in %s\n\n",
-              exact, coexact, precision == TVF::Eigenfunction_precision::float32 ? "float32" : "double");
+              "included); basis = eigenfunctions and harmonic fields kept (GB); eigenfunctions stored in %s;\n"
+              "Krylov bases restarted at %g vectors per pair (0: never)\n\n",
+              exact, coexact, precision == TVF::Eigenfunction_precision::float32 ? "float32" : "double", restart_per_pair);
   std::printf("%-10s %8s %4s | %7s %7s %7s %7s %8s | %6s %6s | %7s %7s %7s | %9s %s\n", "mesh", "faces", "dimH", "ops",
               "exact", "coexact", "harm.", "set-up", "peak", "basis", "thesis", "target", "speedup", "residual",
               "complete");
@@ -209,6 +215,7 @@ int main(int argc, char** argv)
     const double ops_seconds = seconds_since(start);
     TVF::Basis_options basis_options;
     basis_options.threads = threads;
+    basis_options.restart_per_pair = restart_per_pair;
     TVF::Basis_request request = TVF::Basis_request::per_type(exact, coexact);
     request.precision = precision;
     TVF::Eigenfield_basis basis(solver, request, basis_options);
@@ -238,7 +245,9 @@ int main(int argc, char** argv)
       if(!solver) break;
       tvf_bench::reset_peak_memory();
       const auto start = std::chrono::steady_clock::now();
-      TVF::Eigenfield_basis basis(solver, TVF::Basis_request::lowest(d));
+      TVF::Basis_options sweep_options;
+      sweep_options.restart_per_pair = restart_per_pair;
+      TVF::Eigenfield_basis basis(solver, TVF::Basis_request::lowest(d), sweep_options);
       const double t = seconds_since(start), peak = peak_memory_gb();
       if(reference.size() == 0) reference = basis.eigenvalues().head(50);
       const Eigen::VectorXd head = basis.eigenvalues().head(50);

@@ -44,7 +44,7 @@ struct Row
   bool slicing = false; // must find exactly the interval's eigenvalues (the others at least as many)
 };
 
-Row run_package(const TVF::internal::Scalar_eigenproblem& p, int count)
+Row run_package(const TVF::internal::Scalar_eigenproblem& p, int count, const TVF::Basis_options& settings)
 {
   Row row{"package lowest_eigenpairs", {}, {}};
   try
@@ -53,7 +53,7 @@ Row run_package(const TVF::internal::Scalar_eigenproblem& p, int count)
     const double resident = resident_bytes();
     const auto start = std::chrono::steady_clock::now();
     const TVF::Eigenpairs pairs = TVF::lowest_eigenpairs(p.A, p.d, count, p.kernel,
-                                                         TVF::internal::eigensolver_options(TVF::Basis_options()));
+                                                         TVF::internal::eigensolver_options(settings));
     row.outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if(resident >= 0) row.outcome.peak_bytes = peak_memory_bytes() - resident;
     row.outcome.values = pairs.values;
@@ -76,14 +76,14 @@ Row run_package(const TVF::internal::Scalar_eigenproblem& p, int count)
 // then holds the largest relative distance of their Rayleigh quotients to the eigenvalues).
 Slepc_outcome run_package_joint(const TVF::internal::Scalar_eigenproblem& exact, int exact_count,
                                 const TVF::internal::Scalar_eigenproblem& coexact, int coexact_count, bool float32,
-                                std::vector<Eigen::VectorXd>& values)
+                                const TVF::Basis_options& settings, std::vector<Eigen::VectorXd>& values)
 {
   Slepc_outcome outcome;
   try
   {
     reset_peak_memory();
     const double resident = resident_bytes();
-    TVF::Eigensolver_options options = TVF::internal::eigensolver_options(TVF::Basis_options());
+    TVF::Eigensolver_options options = TVF::internal::eigensolver_options(settings);
     options.float32_vectors = float32;
     const auto start = std::chrono::steady_clock::now();
     const std::vector<TVF::Eigenpairs> pairs = TVF::lowest_eigenpairs_of_each(
@@ -239,7 +239,7 @@ bool compare_on(const Slepc_session& slepc, const Side_by_side_request& request,
   std::printf("\n%s, %s: n = %ld, %d pairs\n", mesh_name.c_str(), title.c_str(), static_cast<long>(p.A.rows()), wanted);
   if(wanted <= 0) return true;
   std::vector<Row> rows;
-  rows.push_back(run_package(p, std::min(wanted + extra_pairs, p.available())));
+  rows.push_back(run_package(p, std::min(wanted + extra_pairs, p.available()), request.package));
   const Slepc_outcome package = rows[0].outcome; // a copy: rows grows below
   package_values = package.values;
   if(!package.ok)
@@ -334,11 +334,13 @@ int run_all(const Side_by_side_request& request)
     "the ranks; the matrices already loaded); eig. diff: largest relative difference to the package's\n"
     "eigenvalues; found: pairs returned (the package asks for %d extra to place the interval's end).\n"
     "Residual and difference are over the pairs in the slicing interval.  BLAS threads: OPENBLAS_NUM_THREADS=%s\n"
-    "for the package and the 1-rank runs, 1 per rank under mpirun.  SLEPc options:\n"
+    "for the package and the 1-rank runs, 1 per rank under mpirun.  Package: Krylov basis restarted at %g\n"
+    "vectors per pair (0: never).  SLEPc options:\n"
     "  slicing, interval (lambda_1/2, gap after lambda_N): %s\n"
     "  slicing, mpirun -np %d:                             %s\n"
     "  Krylov-Schur, target -1, constants deflated:       %s\n",
-    request.exact, request.coexact, extra_pairs, threads ? threads : "unset", slepc_options(slicing).c_str(),
+    request.exact, request.coexact, extra_pairs, threads ? threads : "unset", request.package.restart_per_pair,
+    slepc_options(slicing).c_str(),
     request.ranks, slepc_options(parallel).c_str(),
     request.krylov_schur ? slepc_options(krylov_schur).c_str() : "(left out: --no-krylov-schur)");
 
@@ -366,7 +368,7 @@ int run_all(const Side_by_side_request& request)
     const int exact_count = std::min(std::min(request.exact, exact.available()) + extra_pairs, exact.available());
     const int coexact_count = std::min(std::min(request.coexact, coexact.available()) + extra_pairs, coexact.available());
     std::vector<Eigen::VectorXd> joint_values;
-    const Slepc_outcome joint = run_package_joint(exact, exact_count, coexact, coexact_count, false, joint_values);
+    const Slepc_outcome joint = run_package_joint(exact, exact_count, coexact, coexact_count, false, request.package, joint_values);
     if(joint.ok)
     {
       // Against the one-problem runs' eigenvalues (other random starts, other cuts).
@@ -380,7 +382,7 @@ int run_all(const Side_by_side_request& request)
       totals.joint_seconds = joint.seconds;
       totals.joint_peak = joint.peak_bytes;
       std::vector<Eigen::VectorXd> rounded_values;
-      const Slepc_outcome rounded = run_package_joint(exact, exact_count, coexact, coexact_count, true, rounded_values);
+      const Slepc_outcome rounded = run_package_joint(exact, exact_count, coexact, coexact_count, true, request.package, rounded_values);
       if(rounded.ok)
         std::printf("%s, the same with the vectors returned in float32: %.2f s, peak %.3f GB, Rayleigh quotients of "
                     "the rounded vectors within %.1e of the eigenvalues\n",

@@ -9,6 +9,7 @@
 
 #include "slepc_runs.h"
 
+#include <CGAL/Tangent_vector_fields/Eigenfield_basis.h>
 #include <CGAL/Tangent_vector_fields/Hodge_solver.h>
 
 #include <functional>
@@ -35,6 +36,8 @@ struct Side_by_side_request
   /// Also SLEPc's Krylov-Schur (the slowest: 246 s on the bunny against 96 s for slicing
   /// under mpirun); `--no-krylov-schur` leaves it out on meshes where it would take an hour.
   bool krylov_schur = true;
+  /// The package's settings (its eigensolver's are taken from them, as the basis does).
+  CGAL::Tangent_vector_fields::Basis_options package;
 };
 
 /// Prints one table per mesh and problem and the totals; returns the exit code

@@ -179,8 +179,8 @@ TEST(Eigensolver, ThickRestartsCapTheKrylovBasisAndKeepTheSpectrum)
   // Windows of ~30 pairs restarted at 1 vector per pair (the tightest setting, 8 blocks of
   // room): the Krylov basis must stay below the unrestarted one's, and the pairs must still
   // be the dense solve's, with residuals computed here from A and D, D-orthonormal and
-  // complete by the inertia.  The perfect icosphere's multiplicities of up to 5 also take
-  // the retry with wider blocks through restarts.
+  // complete by the inertia.  The perfect icosphere's multiplicities of up to 5, more than a
+  // block finds at once, must be found through restarts as well.
   Mesh sphere = make_icosphere(3);
   Mesh jittered = make_icosphere(3);
   jitter_vertices(jittered, 0.1, 11);

@@ -5,8 +5,9 @@
 #define CGAL_TANGENT_VECTOR_FIELDS_INTERNAL_LANCZOS_WINDOW_H
 
 /// \file Lanczos_window.h
-/// One window of spectrum slicing: a block shift-and-invert Lanczos run that finds
-/// exactly the pairs an inertia count says lie in the window.
+/// One window of spectrum slicing: a block shift-and-invert Lanczos run, thick-restarted
+/// (`Eigensolver_options::restart_per_pair`), that finds exactly the pairs an inertia count
+/// says lie in the window.
 
 #include <CGAL/Tangent_vector_fields/Sparse_ldlt_solver.h>
 #include <CGAL/Tangent_vector_fields/internal/Column_store.h>
@@ -41,7 +42,7 @@ struct Ritz_pair
 typedef std::vector<Ritz_pair> Ritz_set;
 
 // Krylov basis and projected matrix, kept from window to window of a chain: allocating
-// them per window made page faults a fifth of the run.
+// them per window made page faults a fifth of the run.  Their size is the restart limit.
 struct Lanczos_workspace
 {
   Eigen::MatrixXd Q, H;
