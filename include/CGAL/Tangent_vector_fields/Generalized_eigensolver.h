@@ -52,7 +52,8 @@ struct Eigensolver_options
   /// set.  A trade of time for memory, measured with 1.3 against 0 (500 + 500 pairs, two
   /// threads): bunny (104k Crouzeix-Raviart unknowns alone), peaks 638-651 MB against
   /// 752-756 MB in 3 runs each, in the same time; armadillo (both problems, 519k edges),
-  /// peak 4.07 against 4.41 GB but 203 s against 165 s.
+  /// peak 4.07 against 4.41 GB, 203 s against 165 s in one pair of runs and 182 s against
+  /// 185 s in another: off until alternated runs settle the time.
   double restart_per_pair = 0;
   /// Required relative residual of every returned pair, in the mass-weighted norms:
   /// `|D^-1/2 (A x - l D x)| / (l |D^1/2 x|)`.  This is the residual of the symmetric
