@@ -42,7 +42,8 @@ struct Ritz_pair
 typedef std::vector<Ritz_pair> Ritz_set;
 
 // Krylov basis and projected matrix, kept from window to window of a chain: allocating
-// them per window made page faults a fifth of the run.  Their size is the restart limit.
+// them per window made page faults a fifth of the run.  Sized to the largest basis a window
+// may reach: the restart limit when restarting, the unrestarted limit otherwise.
 struct Lanczos_workspace
 {
   Eigen::MatrixXd Q, H;
