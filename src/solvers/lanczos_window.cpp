@@ -122,6 +122,20 @@ bool polish(const Standard_eigenproblem& p, const Window& w, const Eigen::Ref<co
   return true;
 }
 
+// The first `S.cols()` columns of `Q` become `Q.leftCols(complete) * S`, in place, a band of
+// rows at a time: no n x S.cols() temporary.
+void turn_in_place(Eigen::MatrixXd& Q, int complete, const Eigen::MatrixXd& S)
+{
+  const Eigen::Index n = Q.rows(), band = 1024;
+  Eigen::MatrixXd rows;
+  for(Eigen::Index r0 = 0; r0 < n; r0 += band)
+  {
+    const Eigen::Index h = std::min(band, n - r0);
+    rows.noalias() = Q.block(r0, 0, h, complete) * S;
+    Q.block(r0, 0, h, S.cols()) = rows;
+  }
+}
+
 struct Restart_sizes
 {
   int limit, keep;
@@ -157,15 +171,7 @@ int thick_restart(Eigen::MatrixXd& Q, Eigen::MatrixXd& H, const Eigen::MatrixXd&
     S.col(j) = T.col(order[static_cast<std::size_t>(j)]);
     kept[j] = theta[order[static_cast<std::size_t>(j)]];
   }
-  // In place, a band of rows at a time: no n x keep temporary.
-  const Eigen::Index n = Q.rows(), band = 1024;
-  Eigen::MatrixXd rows;
-  for(Eigen::Index r0 = 0; r0 < n; r0 += band)
-  {
-    const Eigen::Index h = std::min(band, n - r0);
-    rows.noalias() = Q.block(r0, 0, h, complete) * S;
-    Q.block(r0, 0, h, keep) = rows;
-  }
+  turn_in_place(Q, complete, S);
   Q.middleCols(keep, b) = Q.middleCols(complete, b); // keep + b <= complete: no overlap
   const Eigen::MatrixXd coupling = H.block(complete, 0, b, complete) * S;
   H.topLeftCorner(complete + b, complete + b).setZero();
@@ -195,7 +201,7 @@ void lanczos_window(const Standard_eigenproblem& p, Eigen::SparseMatrix<double>&
   const Restart_sizes sizes = restart_sizes(wanted, b, max_basis, options.restart_per_pair);
   const int basis_limit = sizes.limit, restart_keep = sizes.keep;
   const bool restarts = basis_limit < max_basis;
-  const long budget = restarts ? 3L * max_basis : max_basis; // columns generated, restarts included
+  long budget = restarts ? 3L * max_basis : max_basis; // columns generated, restarts included
   long generated = b;
   auto deflate = [&](Eigen::MatrixXd& Z) {
     p.deflate(Z);
@@ -311,66 +317,73 @@ void lanczos_window(const Standard_eigenproblem& p, Eigen::SparseMatrix<double>&
                               std::to_string(w.hi) + "] than the inertia count " + std::to_string(wanted));
     if(static_cast<int>(in_window.size()) == wanted)
     {
-      // Accept on the true residual of A x = lambda D x.  The Ritz vectors are computed
-      // straight into the store, one product per run of adjacent columns.
+      // Accept on the true residual of A x = lambda D x.  The Ritz vectors are formed in
+      // place of the basis' first columns, then moved into the store a column at a time,
+      // each column's pages given back as it goes: no block of new vectors next to the
+      // whole basis (at the end of the largest chain, with most pairs held, that block set
+      // the peak of the solve).
       std::vector<int> all = in_window;
       all.insert(all.end(), in_carry.begin(), in_carry.end());
       const Eigen::Index count = static_cast<Eigen::Index>(all.size());
       Eigen::MatrixXd S(complete, count);
-      Eigen::VectorXd values(count), residuals(count), tolerances(count);
+      Eigen::VectorXd values(count), residuals, tolerances;
       for(Eigen::Index i = 0; i < count; ++i)
       {
         S.col(i) = T.col(all[i]);
         values[i] = w.sigma + 1 / theta[all[i]];
       }
-      std::vector<double*> columns;
-      Eigen::Index first = 0;
-      for(const Vector_store::Run& run : store.add_columns(n, count))
-      {
-        Eigen::Map<Eigen::MatrixXd> Y(run.first, n, run.second);
-        Y.noalias() = Q.leftCols(complete) * S.middleCols(first, run.second);
-        Eigen::VectorXd r, t;
-        p.residuals_of_standard(values.segment(first, run.second), Y, options.tolerance, r, &t);
-        residuals.segment(first, run.second) = r;
-        tolerances.segment(first, run.second) = t;
-        for(Eigen::Index j = 0; j < run.second; ++j) columns.push_back(run.first + j * n);
-        first += run.second;
-      }
+      turn_in_place(Q, complete, S);
+      const auto Y = Q.leftCols(count);
+      p.residuals_of_standard(values, Y, options.tolerance, residuals, &tolerances);
       const Eigen::Index in_count = static_cast<Eigen::Index>(in_window.size());
       auto accurate = [&](Eigen::Index i) { return residuals[i] <= tolerances[i]; };
-      auto give_back = [&](Eigen::Index i) { store.release(columns[static_cast<std::size_t>(i)]); };
       bool window_ok = true;
       for(Eigen::Index i = 0; i < in_count; ++i) window_ok = window_ok && accurate(i);
       if(window_ok)
       {
-        // Carried only if accurate; the others given back last first (the store reuses the
-        // last column given back).
-        for(Eigen::Index i = count - 1; i >= in_count; --i)
-          if(!accurate(i)) give_back(i);
+        // Carried only if accurate.
         for(Eigen::Index i = 0; i < count; ++i)
           if(i < in_count || accurate(i))
-            (i < in_count ? window : carry).push_back({values[i], columns[static_cast<std::size_t>(i)], n, residuals[i], tolerances[i]});
+          {
+            double* column = store.add(Q.col(i));
+            discard_pages(Q.col(i).data(), sizeof(double) * static_cast<std::size_t>(n));
+            (i < in_count ? window : carry).push_back({values[i], column, n, residuals[i], tolerances[i]});
+          }
+        // The basis is written afresh by the next window.
+        discard_pages(Q.data(), sizeof(double) * static_cast<std::size_t>(n) * static_cast<std::size_t>(m));
         basis_used = std::max(basis_used, complete);
         return;
       }
-      // Polishing works on the window's vectors while their store columns are given back
-      // (the polished ones take them): they are copied into the Krylov basis, whose work is
-      // done (count <= complete columns).
-      if(indefinite && !refine)
-        for(Eigen::Index i = 0; i < count; ++i) Q.col(i) = Eigen::Map<Eigen::VectorXd>(columns[static_cast<std::size_t>(i)], n);
-      for(Eigen::Index i = count - 1; i >= 0; --i) give_back(i);
       if(indefinite && !refine)
       {
-        // The estimate holds for the inexact operator only.
-        if(polish(p, w, Q.leftCols(count), values, residuals, tolerances, deflate, K, solver, options.tolerance, store,
-                  window, carry, applications))
+        // Polishing works on the window's vectors in the basis, whose work is done.  The
+        // estimate holds for the inexact operator only.
+        if(polish(p, w, Y, values, residuals, tolerances, deflate, K, solver, options.tolerance, store, window,
+                  carry, applications))
         {
           basis_used = std::max(basis_used, complete);
           return;
         }
         throw Inaccurate_solves();
       }
-      estimate_factor = std::max(estimate_factor * 1e-2, 1e-6); // the estimate was optimistic: ask for more
+      // The estimate was optimistic: ask for more, going on from the Ritz vectors formed
+      // (a thick restart that keeps them; the columns dropped may be generated again, as
+      // long as the estimate can still be made stricter).
+      const bool stricter = estimate_factor > 1e-6;
+      estimate_factor = std::max(estimate_factor * 1e-2, 1e-6);
+      if(!exhausted) // else the failure below
+      {
+        const Eigen::MatrixXd coupling_kept = H.block(complete, 0, b, complete) * S;
+        Q.middleCols(count, b) = Q.middleCols(complete, b).eval(); // the two may overlap
+        H.topLeftCorner(complete + b, complete + b).setZero();
+        for(Eigen::Index i = 0; i < count; ++i) H(i, i) = theta[all[i]];
+        H.block(count, 0, b, count) = coupling_kept;
+        if(stricter) budget += complete - count;
+        complete = static_cast<int>(count);
+        m = complete + b;
+        next_check = std::min(max_basis, complete + 2 * b);
+        continue;
+      }
     }
     if(exhausted)
     {

@@ -273,10 +273,12 @@ void run_chain(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysi
     monitor.converged[index] = std::min(count, static_cast<int>(found.size()));
     if(monitor.report) monitor.report();
   }
-  // Pairs carried beyond the end (the next chain's, or beyond the count): their vectors
-  // would keep their blocks of the store, and the window's pairs in them, alive until the
-  // chain is destroyed -- past the copy of the result.
-  for(const Ritz_pair& pair : carry) chain.store.release(pair.data);
+  // Pairs carried beyond the end (the next chain's, or beyond the count), and the columns
+  // the last window gave back for reuse: their pages would stay resident until the
+  // result is copied out.
+  for(const Ritz_pair& pair : carry) chain.store.release(pair.data, false);
+  chain.store.discard_kept();
+  chain.rounded.discard_kept();
   chain.end = lo;
   chain.below_end = below_lo;
   chain.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

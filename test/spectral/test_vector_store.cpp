@@ -3,14 +3,21 @@
 
 // Pieces of a slicing chain: the store of its converged vectors (contents kept across
 // blocks, a block freed exactly when all its columns are given back, foreign addresses
-// refused) and the block Gram-Schmidt kernel against its Krylov basis.
+// refused, the pages of a column given back at once unless kept for reuse) and the block
+// Gram-Schmidt kernel against its Krylov basis.
 
 #include <CGAL/Tangent_vector_fields/internal/Lanczos_window.h>
 
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <vector>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#include <unistd.h>
+#endif
 
 namespace {
 
@@ -44,6 +51,58 @@ TEST(VectorStore, KeepsEveryVectorAndFreesABlockOnceAllItsColumnsAreBack)
 
   double outside = 0;
   EXPECT_FALSE(store.release(&outside));
+}
+
+#if defined(__linux__)
+// Pages wholly inside `column` (n doubles) that are resident, by mincore.
+int resident_pages(const double* column, Eigen::Index n)
+{
+  const std::uintptr_t page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
+  const std::uintptr_t begin = (reinterpret_cast<std::uintptr_t>(column) + page - 1) & ~(page - 1);
+  const std::uintptr_t end = (reinterpret_cast<std::uintptr_t>(column + n)) & ~(page - 1);
+  std::vector<unsigned char> in_core((end - begin) / page);
+  if(mincore(reinterpret_cast<void*>(begin), end - begin, in_core.data()) != 0) return -1;
+  int count = 0;
+  for(unsigned char c : in_core) count += c & 1;
+  return count;
+}
+#endif
+
+TEST(VectorStore, GivesTheMemoryOfAColumnBackAtOnceUnlessKeptForTheNextAdd)
+{
+#if !defined(__linux__)
+  GTEST_SKIP() << "page residency is read with Linux's mincore";
+#else
+  const Eigen::Index n = 1 << 16; // 512 KB a column: 127 whole pages or more
+  const int count = 10;
+  TVF::internal::Vector_store store;
+  const Eigen::MatrixXd vectors = Eigen::MatrixXd::Random(n, count);
+  std::vector<double*> column(count);
+  for(int i = 0; i < count; ++i) column[i] = store.add(vectors.col(i));
+  const int whole_pages = resident_pages(column[3], n);
+  ASSERT_GE(whole_pages, 127) << "a column just written should be resident";
+
+  // A column in the middle: its pages go back, its neighbours keep their contents.
+  EXPECT_TRUE(store.release(column[3]));
+  EXPECT_EQ(resident_pages(column[3], n), 0);
+  for(int i : {2, 4})
+    EXPECT_EQ((Eigen::Map<Eigen::VectorXd>(column[i], n) - vectors.col(i)).norm(), 0.) << "column " << i;
+
+  // The last column is kept for the next add, which reuses it.
+  EXPECT_TRUE(store.release(column[9]));
+  EXPECT_EQ(resident_pages(column[9], n), whole_pages);
+  EXPECT_EQ(store.add(vectors.col(0)), column[9]);
+  EXPECT_EQ((Eigen::Map<Eigen::VectorXd>(column[9], n) - vectors.col(0)).norm(), 0.);
+
+  // Given back for good, the last column's pages go too; kept ones go with discard_kept.
+  EXPECT_TRUE(store.release(column[9], false));
+  EXPECT_EQ(resident_pages(column[9], n), 0);
+  EXPECT_TRUE(store.release(column[8]));
+  EXPECT_EQ(resident_pages(column[8], n), whole_pages);
+  store.discard_kept();
+  EXPECT_EQ(resident_pages(column[8], n), 0);
+  EXPECT_EQ((Eigen::Map<Eigen::VectorXd>(column[7], n) - vectors.col(7)).norm(), 0.);
+#endif
 }
 
 // The hand-vectorised projection against columns of a basis equals the plain dense

@@ -63,23 +63,39 @@ public:
     return runs;
   }
 
-  /// Gives `column` back; false if it is not one of this store's.  The last column added
-  /// to a block is reused by the next `add`.
-  bool release(const Scalar* column)
+  /// Gives `column` back; false if it is not one of this store's.  Its pages go back to the
+  /// system at once (a basis copied out column by column then peaks at one copy, not one
+  /// copy plus the blocks not yet emptied), except those of the last column added to a
+  /// block while `keep_last`: the next `add` reuses it (a window gives back the columns it
+  /// is about to recompute last first).
+  bool release(const Scalar* column, bool keep_last = true)
   {
     for(std::unique_ptr<Block>& block : blocks_)
       if(block && block->holds(column))
       {
-        if(column == block->memory.data() + (block->used - 1) * block->rows) --block->used;
-        if(--block->live == 0) block.reset(); // the next `add` starts a new block if it was the last
+        const bool last = column == block->memory.data() + (block->used - 1) * block->rows;
+        if(last) --block->used;
+        if(--block->live == 0)
+          block.reset(); // the next `add` starts a new block if it was the last
+        else if(!(last && keep_last))
+          discard_pages(const_cast<Scalar*>(column), sizeof(Scalar) * static_cast<std::size_t>(block->rows));
         return true;
       }
     return false;
   }
 
+  /// Gives back the pages of the columns released last and kept for reuse.
+  void discard_kept()
+  {
+    for(std::unique_ptr<Block>& block : blocks_)
+      if(block)
+        discard_pages(block->memory.data() + block->used * block->rows,
+                      sizeof(Scalar) * static_cast<std::size_t>((block->capacity - block->used) * block->rows));
+  }
+
 private:
-  // 64 columns: a few percent of the basis per block, so that the peak memory while the
-  // pairs are copied out stays near one copy of the basis.
+  // 64 columns: a few percent of the basis per block (few mappings, and little of a
+  // block's tail left untouched when a chain ends).
   static constexpr Eigen::Index block_columns = 64;
   struct Block
   {

@@ -110,10 +110,11 @@ int split_point(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analys
 double take_over_top(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysis, Chain& victim, int per_window,
                      Chain& taken);
 
-/// Gives the vector of `pair` back to the store of `chain` that holds it; false if neither does.
+/// Gives the vector of `pair` back, pages included, to the store of `chain` that holds it;
+/// false if neither does.
 inline bool release_vector(Chain& chain, const Ritz_pair& pair)
 {
-  return pair.data ? chain.store.release(pair.data) : chain.rounded.release(pair.rounded);
+  return pair.data ? chain.store.release(pair.data, false) : chain.rounded.release(pair.rounded, false);
 }
 
 /// Rayleigh-Ritz on the pairs near `split`, found by two chains that did not lock each other's

@@ -43,6 +43,21 @@ inline void advise_huge_pages(void* data, std::size_t bytes)
 }
 
 /// `m.resize(rows, cols)`, with fresh storage advised to use huge pages (contents undefined).
+/// Gives the pages wholly inside `[data, data + bytes)` back to the system (their contents
+/// are lost; the range stays mapped and reads as zeros after).  Elsewhere a no-op.
+inline void discard_pages(void* data, std::size_t bytes)
+{
+#if defined(__linux__) && defined(MADV_DONTNEED)
+  const std::uintptr_t page = 4096;
+  const std::uintptr_t begin = (reinterpret_cast<std::uintptr_t>(data) + page - 1) & ~(page - 1);
+  const std::uintptr_t end = (reinterpret_cast<std::uintptr_t>(data) + bytes) & ~(page - 1);
+  if(end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_DONTNEED);
+#else
+  (void)data;
+  (void)bytes;
+#endif
+}
+
 template <class Matrix>
 void resize_in_huge_pages(Matrix& m, Eigen::Index rows, Eigen::Index cols)
 {
