@@ -87,8 +87,8 @@ struct Basis_options
   /// Vectors per Lanczos block (see `Eigensolver_options::block_size`).
   int block_size = 4;
   /// When a window's Krylov basis is restarted (see `Eigensolver_options::restart_per_pair`;
-  /// 0: never): less memory, at a price in time on large meshes.
-  double restart_per_pair = 0;
+  /// 0: never).
+  double restart_per_pair = 1.3;
   std::uint64_t seed = 1;
   /// Threads of the eigensolver (see `Eigensolver_options::threads`; 0: one per core).
   int threads = 0;

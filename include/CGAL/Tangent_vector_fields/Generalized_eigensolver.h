@@ -46,15 +46,14 @@ struct Eigensolver_options
   int slice_size = 50;
   /// Spectrum slicing: a window's Krylov basis is restarted (thick restart: cut to its Ritz
   /// vectors nearest the shift, about 1.1 per wanted pair, and grown again) once it holds
-  /// this many vectors per wanted pair, plus 8 blocks; values below 1 count as 1; 0 (the
-  /// default) never restarts.  Unrestarted, a window's basis grows to about 3.7 vectors per
-  /// pair, and the two running windows' bases are the largest part of the solve's working
-  /// set.  A trade of time for memory, measured with 1.3 against 0 (500 + 500 pairs, two
-  /// threads): bunny (104k Crouzeix-Raviart unknowns alone), peaks 638-651 MB against
-  /// 752-756 MB in 3 runs each, in the same time; armadillo (both problems, 519k edges),
-  /// peak 4.07 against 4.41 GB, 203 s against 165 s in one pair of runs and 182 s against
-  /// 185 s in another: off until alternated runs settle the time.
-  double restart_per_pair = 0;
+  /// this many vectors per wanted pair, plus 8 blocks; values below 1 count as 1; 0 never
+  /// restarts.  Unrestarted, a window's basis grows to about 3.7 vectors per pair, and the
+  /// two running windows' bases are the largest part of the solve's working set.  Measured
+  /// with 1.3 against 0 (500 + 500 pairs, two threads, runs alternated): bunny (104k
+  /// Crouzeix-Raviart unknowns alone), peaks 638-651 MB against 752-756 MB, in the same
+  /// time; armadillo (both problems, 519k edges, three pairs), peaks 3.19-3.28 GB against
+  /// 3.62-3.76 GB, 168, 212 and 234 s against 185, 238 and 194 s (614 s against 617 s).
+  double restart_per_pair = 1.3;
   /// Required relative residual of every returned pair, in the mass-weighted norms:
   /// `|D^-1/2 (A x - l D x)| / (l |D^1/2 x|)`.  This is the residual of the symmetric
   /// standard form `D^-1/2 A D^-1/2`, so it bounds the relative error of the

@@ -42,9 +42,7 @@ public:
   /// A run of adjacent new columns (uninitialised): its first column and its length.
   typedef std::pair<Scalar*, Eigen::Index> Run;
 
-  /// `count` new columns of `rows` entries, as few runs as the blocks allow (a window's
-  /// Ritz vectors are computed straight into them: a buffer of their size per chain was
-  /// 83 MB at the bunny's 104k edges).
+  /// `count` new columns of `rows` entries, as few runs as the blocks allow.
   std::vector<Run> add_columns(Eigen::Index rows, Eigen::Index count)
   {
     std::vector<Run> runs;

@@ -26,16 +26,35 @@ namespace CGAL {
 namespace Tangent_vector_fields {
 namespace internal {
 
+#if defined(__linux__)
+/// `madvise(advice)` on the whole `unit`-sized pages inside `[data, data + bytes)`.
+inline void advise_whole_pages(void* data, std::size_t bytes, std::uintptr_t unit, int advice)
+{
+  const std::uintptr_t begin = (reinterpret_cast<std::uintptr_t>(data) + unit - 1) & ~(unit - 1);
+  const std::uintptr_t end = (reinterpret_cast<std::uintptr_t>(data) + bytes) & ~(unit - 1);
+  if(end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, advice);
+}
+#endif
+
 /// Asks the kernel to back the whole 2 MB pages inside `[data, data + bytes)` with huge
 /// pages.  Only pages not touched yet gain; a hint, so failure is ignored.
 inline void advise_huge_pages(void* data, std::size_t bytes)
 {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
   constexpr std::uintptr_t huge = std::uintptr_t(2) << 20;
-  if(bytes < 2 * huge) return;
-  const std::uintptr_t begin = (reinterpret_cast<std::uintptr_t>(data) + huge - 1) & ~(huge - 1);
-  const std::uintptr_t end = (reinterpret_cast<std::uintptr_t>(data) + bytes) & ~(huge - 1);
-  if(end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+  if(bytes >= 2 * huge) advise_whole_pages(data, bytes, huge, MADV_HUGEPAGE);
+#else
+  (void)data;
+  (void)bytes;
+#endif
+}
+
+/// Gives the 4 KB pages wholly inside `[data, data + bytes)` back to the system (their
+/// contents are lost; the range stays mapped and reads as zeros after).  Elsewhere a no-op.
+inline void discard_pages(void* data, std::size_t bytes)
+{
+#if defined(__linux__) && defined(MADV_DONTNEED)
+  advise_whole_pages(data, bytes, 4096, MADV_DONTNEED);
 #else
   (void)data;
   (void)bytes;
@@ -43,21 +62,6 @@ inline void advise_huge_pages(void* data, std::size_t bytes)
 }
 
 /// `m.resize(rows, cols)`, with fresh storage advised to use huge pages (contents undefined).
-/// Gives the pages wholly inside `[data, data + bytes)` back to the system (their contents
-/// are lost; the range stays mapped and reads as zeros after).  Elsewhere a no-op.
-inline void discard_pages(void* data, std::size_t bytes)
-{
-#if defined(__linux__) && defined(MADV_DONTNEED)
-  const std::uintptr_t page = 4096;
-  const std::uintptr_t begin = (reinterpret_cast<std::uintptr_t>(data) + page - 1) & ~(page - 1);
-  const std::uintptr_t end = (reinterpret_cast<std::uintptr_t>(data) + bytes) & ~(page - 1);
-  if(end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_DONTNEED);
-#else
-  (void)data;
-  (void)bytes;
-#endif
-}
-
 template <class Matrix>
 void resize_in_huge_pages(Matrix& m, Eigen::Index rows, Eigen::Index cols)
 {
