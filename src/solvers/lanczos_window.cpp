@@ -152,6 +152,22 @@ Restart_sizes restart_sizes(int wanted, int b, int max_basis, double per_pair)
   return {limit, std::min(wanted + wanted / 10 + 2 * b, limit - 2 * b)};
 }
 
+// The thick-restart form, once the first `S.cols()` columns of `Q` hold the Ritz vectors
+// `Q.leftCols(complete) * S` (`turn_in_place`) of values `kept`: the next block moves next
+// to them, and `H` becomes diagonal on them with the next block coupled to each.  Returns
+// the new count of complete columns.
+int restart_on_formed(Eigen::MatrixXd& Q, Eigen::MatrixXd& H, const Eigen::MatrixXd& S, const Eigen::VectorXd& kept,
+                      int complete, int b)
+{
+  const int keep = static_cast<int>(S.cols());
+  const Eigen::MatrixXd coupling = H.block(complete, 0, b, complete) * S;
+  Q.middleCols(keep, b) = Q.middleCols(complete, b).eval(); // they overlap if keep + b > complete
+  H.topLeftCorner(complete + b, complete + b).setZero();
+  H.diagonal().head(keep) = kept;
+  H.block(keep, 0, b, keep) = coupling;
+  return keep;
+}
+
 // Cuts the Krylov basis `Q` (its first `complete` columns and the next block) to the `keep`
 // Ritz vectors whose values `theta` (of shift-and-invert: 1 / (lambda - sigma)) are largest
 // in magnitude, the eigenvectors of `T` giving them, followed by the next block: the
@@ -172,12 +188,7 @@ int thick_restart(Eigen::MatrixXd& Q, Eigen::MatrixXd& H, const Eigen::MatrixXd&
     kept[j] = theta[order[static_cast<std::size_t>(j)]];
   }
   turn_in_place(Q, complete, S);
-  Q.middleCols(keep, b) = Q.middleCols(complete, b); // keep + b <= complete: no overlap
-  const Eigen::MatrixXd coupling = H.block(complete, 0, b, complete) * S;
-  H.topLeftCorner(complete + b, complete + b).setZero();
-  H.diagonal().head(keep) = kept;
-  H.block(keep, 0, b, keep) = coupling;
-  return keep;
+  return restart_on_formed(Q, H, S, kept, complete, b);
 }
 
 } // namespace
@@ -326,11 +337,12 @@ void lanczos_window(const Standard_eigenproblem& p, Eigen::SparseMatrix<double>&
       all.insert(all.end(), in_carry.begin(), in_carry.end());
       const Eigen::Index count = static_cast<Eigen::Index>(all.size());
       Eigen::MatrixXd S(complete, count);
-      Eigen::VectorXd values(count), residuals, tolerances;
+      Eigen::VectorXd values(count), formed_theta(count), residuals, tolerances;
       for(Eigen::Index i = 0; i < count; ++i)
       {
         S.col(i) = T.col(all[i]);
-        values[i] = w.sigma + 1 / theta[all[i]];
+        formed_theta[i] = theta[all[i]];
+        values[i] = w.sigma + 1 / formed_theta[i];
       }
       turn_in_place(Q, complete, S);
       const auto Y = Q.leftCols(count);
@@ -373,13 +385,8 @@ void lanczos_window(const Standard_eigenproblem& p, Eigen::SparseMatrix<double>&
       estimate_factor = std::max(estimate_factor * 1e-2, 1e-6);
       if(!exhausted) // else the failure below
       {
-        const Eigen::MatrixXd coupling_kept = H.block(complete, 0, b, complete) * S;
-        Q.middleCols(count, b) = Q.middleCols(complete, b).eval(); // the two may overlap
-        H.topLeftCorner(complete + b, complete + b).setZero();
-        for(Eigen::Index i = 0; i < count; ++i) H(i, i) = theta[all[i]];
-        H.block(count, 0, b, count) = coupling_kept;
         if(stricter) budget += complete - count;
-        complete = static_cast<int>(count);
+        complete = restart_on_formed(Q, H, S, formed_theta, complete, b);
         m = complete + b;
         next_check = std::min(max_basis, complete + 2 * b);
         continue;
