@@ -19,109 +19,6 @@ namespace internal {
 
 namespace {
 
-// The pairs of an unrefined run that converged by the Lanczos estimate but missed their
-// tolerance on the true residual are few and close to it, at the far end of the window
-// from the shift (bunny, Crouzeix-Raviart: 1 to 3 of 50, 1.5e-10 .. 2.4e-10 against
-// 1e-10).  One refined solve with a shift at the worst of them, then Rayleigh-Ritz on A
-// itself over the window's Ritz vectors and these images, usually brings them there for
-// a fraction of a rerun of the window.  (Images of all the Ritz vectors at the window's
-// shift add directions from all over the spectrum, whose combinations made spurious
-// Ritz values inside the window: 62 for 47.)  `Y` holds the window's pairs first, then
-// the carried ones; `deflate` removes the kernel and the locked vectors.  The shifted
-// matrix `K` and its factor `solver` are the window's, overwritten: a factor of their own
-// was the largest transient of the set-up (with a copy of `Y`: 0.1 GB at the bunny's 104k
-// edges, where the peak memory was reached during a polish).  Returns false if it did not
-// succeed.
-template <class Deflate>
-bool polish(const Standard_eigenproblem& p, const Window& w, const Eigen::Ref<const Eigen::MatrixXd>& Y,
-            const Eigen::VectorXd& values, const Eigen::VectorXd& residuals, const Eigen::VectorXd& tolerances,
-            const Deflate& deflate, Eigen::SparseMatrix<double>& K, Sparse_ldlt_solver& solver, double tolerance,
-            Vector_store& store, Ritz_set& window, Ritz_set& carry, int& applications)
-{
-  const Eigen::Index n = Y.rows(), k = Y.cols();
-  std::vector<Eigen::Index> failed;
-  Eigen::Index worst = 0;
-  for(Eigen::Index i = 0; i < w.wanted; ++i)
-    if(!(residuals[i] <= tolerances[i]))
-    {
-      failed.push_back(i);
-      if(residuals[i] / tolerances[i] > residuals[worst] / tolerances[worst]) worst = i;
-    }
-  if(failed.empty() || failed.size() > 8) return false;
-  // The shift a thousandth of the mean eigenvalue spacing of the window away from the
-  // Ritz value: exactly at it, the pivots come near zero (measured: 2.5e-15 relative).
-  const double spacing = (w.hi - w.lo) / std::max(1, w.wanted);
-  for(double offset = 1e-3 * spacing;; offset *= 10)
-  {
-    K = p.A;
-    K.diagonal() -= (values[worst] + offset) * p.d;
-    solver.factor(K, "the eigenproblem shifted next to a Ritz value");
-    if(solver.smallest_relative_pivot() >= 1e-14) break;
-    if(offset >= 0.1 * spacing) return false;
-  }
-  Eigen::MatrixXd rhs(n, static_cast<Eigen::Index>(failed.size()));
-  for(std::size_t j = 0; j < failed.size(); ++j) rhs.col(static_cast<Eigen::Index>(j)) = p.sqrt_d.cwiseProduct(Y.col(failed[j]));
-  Eigen::MatrixXd X = solver.solve(rhs);
-  X += solver.solve(Eigen::MatrixXd(rhs - K * X));
-  applications += static_cast<int>(2 * failed.size());
-  Eigen::MatrixXd Z = p.sqrt_d.asDiagonal() * X;
-  deflate(Z);
-  for(int pass = 0; pass < 2; ++pass) Z -= Y * (Y.transpose() * Z);
-  Z = orthonormal_columns(Z);
-  // G = [Y Z]^T D^-1/2 A D^-1/2 [Y Z], 8 columns at a time, and the Ritz vectors one at a
-  // time: no temporary as large as Y (250 MB at 519k unknowns).
-  const Eigen::Index f = Z.cols(), m = k + f;
-  Eigen::MatrixXd G(m, m), V;
-  for(Eigen::Index j0 = 0; j0 < m; j0 += 8)
-  {
-    V.resize(n, std::min<Eigen::Index>(8, m - j0));
-    for(Eigen::Index j = 0; j < V.cols(); ++j)
-    {
-      if(j0 + j < k) V.col(j) = Y.col(j0 + j);
-      else V.col(j) = Z.col(j0 + j - k);
-    }
-    const Eigen::MatrixXd AV = p.inv_sqrt_d.asDiagonal() * (p.A * (p.inv_sqrt_d.asDiagonal() * V)).eval();
-    G.block(0, j0, k, V.cols()).noalias() = Y.transpose() * AV;
-    G.block(k, j0, f, V.cols()).noalias() = Z.transpose() * AV;
-  }
-  G = (G + G.transpose()).eval() / 2;
-  Eigen::VectorXd mu;
-  symmetric_eigen(G, mu);
-  std::vector<Eigen::Index> chosen;
-  for(Eigen::Index i = 0; i < mu.size(); ++i)
-    if(mu[i] > w.lo && mu[i] <= w.hi) chosen.push_back(i);
-  // Rayleigh-Ritz may also make a value inside the window from images that still hold
-  // parts of eigenvectors far below it (not locked out): its residual is large.  So the
-  // window's Ritz values may be more than wanted, but exactly `wanted` must meet their
-  // tolerance -- orthonormal vectors with those residuals, as many as the inertia counts.
-  const std::size_t in_window = chosen.size();
-  if(static_cast<int>(in_window) < w.wanted) return false;
-  for(Eigen::Index i = 0; i < mu.size(); ++i)
-    if(mu[i] > w.hi && mu[i] < w.carry_hi) chosen.push_back(i);
-  Ritz_set accepted;
-  int accepted_in_window = 0;
-  Eigen::VectorXd v(n), value(1), r, t;
-  for(std::size_t j = 0; j < chosen.size(); ++j)
-  {
-    v.noalias() = Y * G.col(chosen[j]).head(k);
-    v.noalias() += Z * G.col(chosen[j]).tail(f);
-    value[0] = mu[chosen[j]];
-    p.residuals_of_standard(value, v, tolerance, r, &t);
-    if(!(r[0] <= t[0])) continue;
-    accepted.push_back({value[0], store.add(v), n, r[0], t[0]});
-    if(j < in_window) ++accepted_in_window;
-  }
-  if(accepted_in_window != w.wanted) // give the vectors back
-  {
-    for(const Ritz_pair& pair : accepted) store.release(pair.data);
-    return false;
-  }
-  // Window pairs first, then carried ones that met their tolerance.
-  window.insert(window.end(), accepted.begin(), accepted.begin() + accepted_in_window);
-  carry.insert(carry.end(), accepted.begin() + accepted_in_window, accepted.end());
-  return true;
-}
-
 // The first `S.cols()` columns of `Q` become `Q.leftCols(complete) * S`, in place, a band of
 // rows at a time: no n x S.cols() temporary.
 void turn_in_place(Eigen::MatrixXd& Q, int complete, const Eigen::MatrixXd& S)
@@ -134,6 +31,139 @@ void turn_in_place(Eigen::MatrixXd& Q, int complete, const Eigen::MatrixXd& S)
     rows.noalias() = Q.block(r0, 0, h, complete) * S;
     Q.block(r0, 0, h, S.cols()) = rows;
   }
+}
+
+// The pairs of an unrefined run that converged by the Lanczos estimate but missed their
+// tolerance on the true residual are few and close to it, at the far end of the window
+// from the shift (bunny, Crouzeix-Raviart: 1 to 3 of 50, 1.5e-10 .. 2.4e-10 against
+// 1e-10).  One refined solve with a shift at the worst of them, then Rayleigh-Ritz on A
+// itself over the window's Ritz vectors and these images, usually brings them there for
+// a fraction of a rerun of the window.  (Images of all the Ritz vectors at the window's
+// shift add directions from all over the spectrum, whose combinations made spurious
+// Ritz values inside the window: 62 for 47.)
+constexpr int most_polished = 8;
+
+// The window's pairs and the carried ones are the first `k` columns of `Q`, whose other
+// columns are free; `deflate` removes the kernel and the locked vectors.  Everything
+// happens in `Q`: the images go next to the Ritz vectors, and the new Ritz vectors are
+// formed in place of them (`turn_in_place`).  Collecting them next to the basis made the
+// peak of the armadillo's set-up: 50-60 new vectors (0.25 GB at 519k edges) next to a
+// basis of 100 while the other chain's basis was at its largest.  The factor `solver` is
+// the window's, overwritten (a factor of its own was the largest transient at the bunny's
+// 104k edges).  Returns how many of the pairs accepted are the window's (0: the polish did
+// not succeed); `accepted` lists their columns of `Q`, the window's first, with their
+// values, residuals and tolerances.
+template <class Deflate>
+Eigen::Index polish(const Standard_eigenproblem& p, const Window& w, Eigen::MatrixXd& Q, Eigen::Index k,
+                    const Eigen::VectorXd& values, const Eigen::VectorXd& residuals, const Eigen::VectorXd& tolerances,
+                    const Deflate& deflate, Sparse_ldlt_solver& solver, double tolerance,
+                    std::vector<Eigen::Index>& accepted, Eigen::VectorXd& accepted_values,
+                    Eigen::VectorXd& accepted_residuals, Eigen::VectorXd& accepted_tolerances, int& applications)
+{
+  const Eigen::Index n = Q.rows();
+  std::vector<Eigen::Index> failed;
+  Eigen::Index worst = 0;
+  for(Eigen::Index i = 0; i < w.wanted; ++i)
+    if(!(residuals[i] <= tolerances[i]))
+    {
+      failed.push_back(i);
+      if(residuals[i] / tolerances[i] > residuals[worst] / tolerances[worst]) worst = i;
+    }
+  if(failed.empty() || failed.size() > most_polished || k + most_polished > Q.cols()) return 0;
+  // The shift a thousandth of the mean eigenvalue spacing of the window away from the
+  // Ritz value: exactly at it, the pivots come near zero (measured: 2.5e-15 relative).
+  const double spacing = (w.hi - w.lo) / std::max(1, w.wanted);
+  double shift = 0;
+  for(double offset = 1e-3 * spacing;; offset *= 10)
+  {
+    shift = values[worst] + offset;
+    solver.factor(p.shifted(shift), "the eigenproblem shifted next to a Ritz value");
+    if(solver.smallest_relative_pivot() >= 1e-14) break;
+    if(offset >= 0.1 * spacing) return 0;
+  }
+  const auto Y = Q.leftCols(k);
+  Eigen::MatrixXd rhs(n, static_cast<Eigen::Index>(failed.size()));
+  for(std::size_t j = 0; j < failed.size(); ++j) rhs.col(static_cast<Eigen::Index>(j)) = p.sqrt_d.cwiseProduct(Y.col(failed[j]));
+  Eigen::MatrixXd X = solver.solve(rhs);
+  X += solver.solve(Eigen::MatrixXd(rhs - p.shifted_times(shift, X)));
+  applications += static_cast<int>(2 * failed.size());
+  Eigen::MatrixXd Z = p.sqrt_d.asDiagonal() * X;
+  deflate(Z);
+  for(int pass = 0; pass < 2; ++pass) Z -= Y * (Y.transpose() * Z);
+  const Eigen::Index f = Z.cols(), m = k + f;
+  Q.middleCols(k, f) = orthonormal_columns(Z);
+  // G = [Y Z]^T D^-1/2 A D^-1/2 [Y Z], 8 columns at a time.
+  Eigen::MatrixXd G(m, m);
+  for(Eigen::Index j0 = 0; j0 < m; j0 += 8)
+  {
+    const auto V = Q.middleCols(j0, std::min<Eigen::Index>(8, m - j0));
+    const Eigen::MatrixXd AV = p.inv_sqrt_d.asDiagonal() * (p.A * (p.inv_sqrt_d.asDiagonal() * V)).eval();
+    G.middleCols(j0, V.cols()).noalias() = Q.leftCols(m).transpose() * AV;
+  }
+  G = (G + G.transpose()).eval() / 2;
+  Eigen::VectorXd mu;
+  symmetric_eigen(G, mu);
+  std::vector<Eigen::Index> chosen;
+  for(Eigen::Index i = 0; i < mu.size(); ++i)
+    if(mu[i] > w.lo && mu[i] <= w.hi) chosen.push_back(i);
+  // Rayleigh-Ritz may also make a value inside the window from images that still hold
+  // parts of eigenvectors far below it (not locked out): its residual is large.  So the
+  // window's Ritz values may be more than wanted, but exactly `wanted` must meet their
+  // tolerance -- orthonormal vectors with those residuals, as many as the inertia counts.
+  const Eigen::Index in_window = static_cast<Eigen::Index>(chosen.size());
+  if(in_window < w.wanted) return 0;
+  for(Eigen::Index i = 0; i < mu.size(); ++i)
+    if(mu[i] > w.hi && mu[i] < w.carry_hi) chosen.push_back(i);
+  const Eigen::Index c = static_cast<Eigen::Index>(chosen.size());
+  Eigen::MatrixXd S(m, c);
+  Eigen::VectorXd chosen_values(c), r, t;
+  for(Eigen::Index j = 0; j < c; ++j)
+  {
+    S.col(j) = G.col(chosen[j]);
+    chosen_values[j] = mu[chosen[j]];
+  }
+  turn_in_place(Q, static_cast<int>(m), S);
+  p.residuals_of_standard(chosen_values, Q.leftCols(c), tolerance, r, &t);
+  accepted.clear();
+  Eigen::Index accepted_in_window = 0;
+  for(Eigen::Index j = 0; j < c; ++j)
+    if(r[j] <= t[j])
+    {
+      accepted.push_back(j);
+      if(j < in_window) ++accepted_in_window;
+    }
+  if(accepted_in_window != w.wanted) return 0;
+  const Eigen::Index a = static_cast<Eigen::Index>(accepted.size());
+  accepted_values.resize(a);
+  accepted_residuals.resize(a);
+  accepted_tolerances.resize(a);
+  for(Eigen::Index i = 0; i < a; ++i)
+  {
+    accepted_values[i] = chosen_values[accepted[i]];
+    accepted_residuals[i] = r[accepted[i]];
+    accepted_tolerances[i] = t[accepted[i]];
+  }
+  return accepted_in_window;
+}
+
+// Moves the accepted pairs, the columns `accepted` of `Q` (the window's first, `in_window`
+// of them), into `store` a column at a time, each column's pages given back as it goes, and
+// then the pages of the basis' first `used` columns, written afresh by the next window: no
+// block of new vectors next to the whole basis (at the end of the largest chain, with most
+// pairs held, that block set the peak of the solve).
+void move_to_store(Eigen::MatrixXd& Q, Eigen::Index used, const std::vector<Eigen::Index>& accepted,
+                   Eigen::Index in_window, const Eigen::VectorXd& values, const Eigen::VectorXd& residuals,
+                   const Eigen::VectorXd& tolerances, Vector_store& store, Ritz_set& window, Ritz_set& carry)
+{
+  const Eigen::Index n = Q.rows();
+  for(std::size_t i = 0; i < accepted.size(); ++i)
+  {
+    double* column = store.add(Q.col(accepted[i]));
+    discard_pages(Q.col(accepted[i]).data(), sizeof(double) * static_cast<std::size_t>(n));
+    (static_cast<Eigen::Index>(i) < in_window ? window : carry)
+        .push_back({values[i], column, n, residuals[i], tolerances[i]});
+  }
+  discard_pages(Q.data(), sizeof(double) * static_cast<std::size_t>(n) * static_cast<std::size_t>(used));
 }
 
 struct Restart_sizes
@@ -196,7 +226,7 @@ int thick_restart(Eigen::MatrixXd& Q, Eigen::MatrixXd& H, const Eigen::MatrixXd&
 // One block Lanczos run at shift `w.sigma` on the complement of `locked` (and the
 // kernel).  Collects the converged pairs with eigenvalue in (lo, hi] into `window`
 // (exactly `wanted` of them) and those in (hi, carry_hi) into `carry`.
-void lanczos_window(const Standard_eigenproblem& p, Eigen::SparseMatrix<double>& K, Sparse_ldlt_solver& solver,
+void lanczos_window(const Standard_eigenproblem& p, Sparse_ldlt_solver& solver,
                     const Window& w, const Locked_columns& locked, const Eigensolver_options& options,
                     std::mt19937_64& generator, Lanczos_workspace& space, Ritz_set& window, Ritz_set& carry,
                     Vector_store& store, int& applications, int& basis_used, const std::function<void(int)>& report)
@@ -228,7 +258,7 @@ void lanczos_window(const Standard_eigenproblem& p, Eigen::SparseMatrix<double>&
   auto op = [&](const Eigen::MatrixXd& Y) -> Eigen::MatrixXd {
     const Eigen::MatrixXd rhs = p.sqrt_d.asDiagonal() * Y;
     Eigen::MatrixXd X = solver.solve(rhs);
-    if(refine) X += solver.solve(Eigen::MatrixXd(rhs - K * X));
+    if(refine) X += solver.solve(Eigen::MatrixXd(rhs - p.shifted_times(w.sigma, X)));
     Eigen::MatrixXd Z = p.sqrt_d.asDiagonal() * X;
     deflate(Z);
     return Z;
@@ -243,7 +273,7 @@ void lanczos_window(const Standard_eigenproblem& p, Eigen::SparseMatrix<double>&
     return X;
   };
 
-  space.reserve(n, basis_limit + b);
+  space.reserve(n, basis_limit + b + most_polished); // room for a polish's images
   Eigen::MatrixXd& Q = space.Q;
   Eigen::MatrixXd& H = space.H;
   // The start block through the operator twice: a random vector has parts of size
@@ -308,7 +338,7 @@ void lanczos_window(const Standard_eigenproblem& p, Eigen::SparseMatrix<double>&
     // (D^-1/2 A D^-1/2 - lambda) y = -(1/theta) D^-1/2 K D^-1/2 r: the residual of every
     // Ritz pair from one small Gram matrix, P^T P with P = D^-1/2 K D^-1/2 Q_next.
     const Eigen::MatrixXd P =
-        p.inv_sqrt_d.asDiagonal() * (K * (p.inv_sqrt_d.asDiagonal() * Q.middleCols(complete, b)).eval());
+        p.inv_sqrt_d.asDiagonal() * p.shifted_times(w.sigma, p.inv_sqrt_d.asDiagonal() * Q.middleCols(complete, b));
     const Eigen::MatrixXd gram = P.transpose() * P;
     std::vector<int> in_window, in_carry;
     for(int k = 0; k < complete; ++k)
@@ -329,10 +359,7 @@ void lanczos_window(const Standard_eigenproblem& p, Eigen::SparseMatrix<double>&
     if(static_cast<int>(in_window.size()) == wanted)
     {
       // Accept on the true residual of A x = lambda D x.  The Ritz vectors are formed in
-      // place of the basis' first columns, then moved into the store a column at a time,
-      // each column's pages given back as it goes: no block of new vectors next to the
-      // whole basis (at the end of the largest chain, with most pairs held, that block set
-      // the peak of the solve).
+      // place of the basis' first columns.
       std::vector<int> all = in_window;
       all.insert(all.end(), in_carry.begin(), in_carry.end());
       const Eigen::Index count = static_cast<Eigen::Index>(all.size());
@@ -345,24 +372,16 @@ void lanczos_window(const Standard_eigenproblem& p, Eigen::SparseMatrix<double>&
         values[i] = w.sigma + 1 / formed_theta[i];
       }
       turn_in_place(Q, complete, S);
-      const auto Y = Q.leftCols(count);
-      p.residuals_of_standard(values, Y, options.tolerance, residuals, &tolerances);
+      p.residuals_of_standard(values, Q.leftCols(count), options.tolerance, residuals, &tolerances);
       const Eigen::Index in_count = static_cast<Eigen::Index>(in_window.size());
-      auto accurate = [&](Eigen::Index i) { return residuals[i] <= tolerances[i]; };
-      bool window_ok = true;
-      for(Eigen::Index i = 0; i < in_count; ++i) window_ok = window_ok && accurate(i);
-      if(window_ok)
+      std::vector<Eigen::Index> accepted; // the window's pairs if all are accurate, the carried ones that are
+      for(Eigen::Index i = 0; i < count; ++i)
+        if(residuals[i] <= tolerances[i]) accepted.push_back(i);
+      if(static_cast<Eigen::Index>(std::count_if(accepted.begin(), accepted.end(),
+                                                 [&](Eigen::Index i) { return i < in_count; })) == in_count)
       {
-        // Carried only if accurate.
-        for(Eigen::Index i = 0; i < count; ++i)
-          if(i < in_count || accurate(i))
-          {
-            double* column = store.add(Q.col(i));
-            discard_pages(Q.col(i).data(), sizeof(double) * static_cast<std::size_t>(n));
-            (i < in_count ? window : carry).push_back({values[i], column, n, residuals[i], tolerances[i]});
-          }
-        // The basis is written afresh by the next window.
-        discard_pages(Q.data(), sizeof(double) * static_cast<std::size_t>(n) * static_cast<std::size_t>(m));
+        move_to_store(Q, m, accepted, in_count, values(accepted), residuals(accepted), tolerances(accepted), store,
+                      window, carry);
         basis_used = std::max(basis_used, complete);
         return;
       }
@@ -370,9 +389,14 @@ void lanczos_window(const Standard_eigenproblem& p, Eigen::SparseMatrix<double>&
       {
         // Polishing works on the window's vectors in the basis, whose work is done.  The
         // estimate holds for the inexact operator only.
-        if(polish(p, w, Y, values, residuals, tolerances, deflate, K, solver, options.tolerance, store, window,
-                  carry, applications))
+        Eigen::VectorXd kept_values, kept_residuals, kept_tolerances;
+        const Eigen::Index polished = polish(p, w, Q, count, values, residuals, tolerances, deflate, solver,
+                                             options.tolerance, accepted, kept_values, kept_residuals,
+                                             kept_tolerances, applications);
+        if(polished > 0)
         {
+          move_to_store(Q, Q.cols(), accepted, polished, kept_values, kept_residuals, kept_tolerances, store,
+                        window, carry);
           basis_used = std::max(basis_used, complete);
           return;
         }

@@ -39,14 +39,11 @@ namespace internal {
 
 namespace {
 
-typedef Eigen::SparseMatrix<double> Sparse_matrix;
-
-// The shifted matrix A - sigma D and its LDL^T, one per chain (a factor is not shared
+// The LDL^T of the shifted matrix A - sigma D, one per chain (a factor is not shared
 // between threads); the fill-reducing analysis is made once, for every chain.
 struct Shifted_factor
 {
   const Standard_eigenproblem& p;
-  Sparse_matrix K;
   Sparse_ldlt_solver solver;
   Shifted_factor(const Standard_eigenproblem& problem, const Sparse_ldlt_solver& analysis) : p(problem)
   {
@@ -54,9 +51,7 @@ struct Shifted_factor
   }
   int factor_at(double sigma)
   {
-    K = p.A;
-    K.diagonal() -= sigma * p.d;
-    solver.factor(K, "the shifted matrix of the eigenproblem");
+    solver.factor(p.shifted(sigma), "the shifted matrix of the eigenproblem");
     return solver.negative_pivots();
   }
 };
@@ -226,7 +221,7 @@ void run_chain(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysi
         if(attempts++ > 0) shifted.factor_at(w.sigma);
         window = Ritz_set();
         new_carry = Ritz_set();
-        lanczos_window(p, shifted.K, shifted.solver, w, locked, o, generator, space, window, new_carry,
+        lanczos_window(p, shifted.solver, w, locked, o, generator, space, window, new_carry,
                        chain.store, chain.applications, chain.basis_used, report);
       };
       // Unrefined solves; a window whose pairs miss their tolerance for want of

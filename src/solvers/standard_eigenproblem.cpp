@@ -80,7 +80,6 @@ Standard_eigenproblem::Standard_eigenproblem(const Eigen::SparseMatrix<double>& 
     for(Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it)
       row_sums[it.row()] += std::abs(it.value()) / std::sqrt(d[it.row()] * d[j]);
   largest_eigenvalue_bound = row_sums.size() ? row_sums.maxCoeff() : 0.;
-  abs_A = A.cwiseAbs();
   sqrt_d = d.cwiseSqrt();
   inv_sqrt_d = sqrt_d.cwiseInverse();
   if(kernel_original.cols() > 0) kernel = orthonormal_columns(sqrt_d.asDiagonal() * kernel_original);
@@ -108,10 +107,24 @@ void Standard_eigenproblem::residuals_of_standard(const Eigen::VectorXd& values,
     residuals[i] = inv_sqrt_d.cwiseProduct(ax - values[i] * d.cwiseProduct(x)).norm() / scale;
     if(!tolerances) continue;
     abs_x = x.cwiseAbs();
-    abs_ax.noalias() = abs_A * abs_x;
+    abs_ax.noalias() = A.cwiseAbs() * abs_x; // |A| is not kept: as large as A
     (*tolerances)[i] =
         std::max(tolerance, 64 * std::numeric_limits<double>::epsilon() * inv_sqrt_d.cwiseProduct(abs_ax).norm() / scale);
   }
+}
+
+Eigen::SparseMatrix<double> Standard_eigenproblem::shifted(double sigma) const
+{
+  Eigen::SparseMatrix<double> K = A;
+  K.diagonal() -= sigma * d;
+  return K;
+}
+
+Eigen::MatrixXd Standard_eigenproblem::shifted_times(double sigma, const Eigen::MatrixXd& X) const
+{
+  Eigen::MatrixXd Y = A * X;
+  Y -= sigma * (d.asDiagonal() * X);
+  return Y;
 }
 
 Eigen::VectorXd Standard_eigenproblem::residuals(const Eigen::VectorXd& values, const Eigen::MatrixXd& X) const

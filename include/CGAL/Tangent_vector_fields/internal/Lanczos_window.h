@@ -97,10 +97,10 @@ private:
 // One block Lanczos run at shift `w.sigma` on the complement of `locked` (and the
 // kernel).  Collects the converged pairs with eigenvalue in (lo, hi] into `window`
 // (exactly `wanted` of them) and those in (hi, carry_hi) into `carry`, their vectors
-// in `store`.  `K` is `A - w.sigma D` and `solver` its factor; a polish overwrites both
-// (shifted next to a Ritz value), so after a return or a throw they may hold another shift.
+// in `store`.  `solver` holds the factor of `A - w.sigma D`; a polish overwrites it
+// (shifted next to a Ritz value), so after a return or a throw it may hold another shift.
 // \throws Inaccurate_solves (only without `w.refine`), Numerical_failure.
-void lanczos_window(const Standard_eigenproblem& p, Eigen::SparseMatrix<double>& K, Sparse_ldlt_solver& solver,
+void lanczos_window(const Standard_eigenproblem& p, Sparse_ldlt_solver& solver,
                     const Window& w, const Locked_columns& locked, const Eigensolver_options& options,
                     std::mt19937_64& generator, Lanczos_workspace& space, Ritz_set& window, Ritz_set& carry,
                     Vector_store& store, int& applications, int& basis_used, const std::function<void(int)>& report);

@@ -38,7 +38,6 @@ struct Standard_eigenproblem
   Eigen::MatrixXd kernel; ///< orthonormal, standard form
   /// Gershgorin bound of the largest eigenvalue of the standard form.
   double largest_eigenvalue_bound = 0;
-  Eigen::SparseMatrix<double> abs_A; ///< `|A|`, for the roundoff of `A x`
 
   Standard_eigenproblem(const Eigen::SparseMatrix<double>& A, const Eigen::VectorXd& d,
                         const Eigen::MatrixXd& kernel_original);
@@ -63,6 +62,12 @@ struct Standard_eigenproblem
   /// The same for vectors in the original variables.
   Eigen::VectorXd residuals(const Eigen::VectorXd& values, const Eigen::MatrixXd& X) const;
   Eigen::VectorXd tolerances_for(const Eigen::VectorXd& values, const Eigen::MatrixXd& X, double tolerance) const;
+
+  /// `A - sigma D`, for a factorisation.  Made when needed and not kept: a copy per thread
+  /// (31 MB at the armadillo's 519k edges) was held through every window, at the peak too.
+  Eigen::SparseMatrix<double> shifted(double sigma) const;
+  /// `(A - sigma D) X`, without the shifted matrix.
+  Eigen::MatrixXd shifted_times(double sigma, const Eigen::MatrixXd& X) const;
 
   /// Removes the kernel's component of the standard-form columns `Z`.
   void deflate(Eigen::MatrixXd& Z) const
