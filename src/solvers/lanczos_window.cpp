@@ -51,14 +51,13 @@ constexpr int most_polished = 8;
 // basis of 100 while the other chain's basis was at its largest.  The factor `solver` is
 // the window's, overwritten (a factor of its own was the largest transient at the bunny's
 // 104k edges).  Returns how many of the pairs accepted are the window's (0: the polish did
-// not succeed); `accepted` lists their columns of `Q`, the window's first, with their
-// values, residuals and tolerances.
+// not succeed); `accepted` lists their columns of `Q`, the window's first, and `values`,
+// `residuals` and `tolerances` those of the first columns of `Q`, accepted or not.
 template <class Deflate>
 Eigen::Index polish(const Standard_eigenproblem& p, const Window& w, Eigen::MatrixXd& Q, Eigen::Index k,
-                    const Eigen::VectorXd& values, const Eigen::VectorXd& residuals, const Eigen::VectorXd& tolerances,
+                    Eigen::VectorXd& values, Eigen::VectorXd& residuals, Eigen::VectorXd& tolerances,
                     const Deflate& deflate, Sparse_ldlt_solver& solver, double tolerance,
-                    std::vector<Eigen::Index>& accepted, Eigen::VectorXd& accepted_values,
-                    Eigen::VectorXd& accepted_residuals, Eigen::VectorXd& accepted_tolerances, int& applications)
+                    std::vector<Eigen::Index>& accepted, int& applications)
 {
   const Eigen::Index n = Q.rows();
   std::vector<Eigen::Index> failed;
@@ -116,34 +115,23 @@ Eigen::Index polish(const Standard_eigenproblem& p, const Window& w, Eigen::Matr
     if(mu[i] > w.hi && mu[i] < w.carry_hi) chosen.push_back(i);
   const Eigen::Index c = static_cast<Eigen::Index>(chosen.size());
   Eigen::MatrixXd S(m, c);
-  Eigen::VectorXd chosen_values(c), r, t;
+  values.resize(c);
   for(Eigen::Index j = 0; j < c; ++j)
   {
     S.col(j) = G.col(chosen[j]);
-    chosen_values[j] = mu[chosen[j]];
+    values[j] = mu[chosen[j]];
   }
   turn_in_place(Q, static_cast<int>(m), S);
-  p.residuals_of_standard(chosen_values, Q.leftCols(c), tolerance, r, &t);
+  p.residuals_of_standard(values, Q.leftCols(c), tolerance, residuals, &tolerances);
   accepted.clear();
   Eigen::Index accepted_in_window = 0;
   for(Eigen::Index j = 0; j < c; ++j)
-    if(r[j] <= t[j])
+    if(residuals[j] <= tolerances[j])
     {
       accepted.push_back(j);
       if(j < in_window) ++accepted_in_window;
     }
-  if(accepted_in_window != w.wanted) return 0;
-  const Eigen::Index a = static_cast<Eigen::Index>(accepted.size());
-  accepted_values.resize(a);
-  accepted_residuals.resize(a);
-  accepted_tolerances.resize(a);
-  for(Eigen::Index i = 0; i < a; ++i)
-  {
-    accepted_values[i] = chosen_values[accepted[i]];
-    accepted_residuals[i] = r[accepted[i]];
-    accepted_tolerances[i] = t[accepted[i]];
-  }
-  return accepted_in_window;
+  return accepted_in_window == w.wanted ? accepted_in_window : 0;
 }
 
 // Moves the accepted pairs, the columns `accepted` of `Q` (the window's first, `in_window`
@@ -389,14 +377,12 @@ void lanczos_window(const Standard_eigenproblem& p, Sparse_ldlt_solver& solver,
       {
         // Polishing works on the window's vectors in the basis, whose work is done.  The
         // estimate holds for the inexact operator only.
-        Eigen::VectorXd kept_values, kept_residuals, kept_tolerances;
         const Eigen::Index polished = polish(p, w, Q, count, values, residuals, tolerances, deflate, solver,
-                                             options.tolerance, accepted, kept_values, kept_residuals,
-                                             kept_tolerances, applications);
+                                             options.tolerance, accepted, applications);
         if(polished > 0)
         {
-          move_to_store(Q, Q.cols(), accepted, polished, kept_values, kept_residuals, kept_tolerances, store,
-                        window, carry);
+          move_to_store(Q, Q.cols(), accepted, polished, values(accepted), residuals(accepted), tolerances(accepted),
+                        store, window, carry);
           basis_used = std::max(basis_used, complete);
           return;
         }

@@ -342,8 +342,8 @@ double take_over_top(const Standard_eigenproblem& p, const Sparse_ldlt_solver& a
 // them orthonormal again (close pairs across the split are otherwise orthogonal only
 // to their residual divided by their gap).  The vectors are read and rotated where the
 // chains keep them, a band of rows at a time: copies of them (the vectors, their images
-// and the rotated ones: 4 x 25 vectors, 0.4 GB at the armadillo's 519k edges) came on top
-// of the whole basis held when the chains end.
+// and the rotated ones: about 4 x 25 vectors, 0.4 GB by count at the armadillo's 519k edges)
+// came on top of the whole basis held when the chains end.
 void join_at(const Standard_eigenproblem& p, double split, double tolerance, Ritz_set& pairs)
 {
   std::vector<std::size_t> near;
