@@ -6,4 +6,4 @@ cd "$(dirname "$0")/.."
 bash scripts/install-dependencies.sh
 bash scripts/build.sh --target hodge_decomposition_demo
 mkdir -p output
-./build/examples/hodge_decomposition_demo "${1:-build/cgal-data/data/meshes/elephant.off}" output/hodge_demo
+./build/examples/tangent_vector_fields/hodge_decomposition_demo "${1:-build/cgal-data/data/meshes/elephant.off}" output/hodge_demo

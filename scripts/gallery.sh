@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Regenerates the pictures in doc/gallery/ with the command-line tool: builds tvf if
+# Regenerates the pictures in doc/tangent_vector_fields/gallery/ with the command-line tool: builds tvf if
 # needed, then decomposes, filters, designs and draws fields on CGAL's elephant (and a
 # torus knot for a harmonic field).  Intermediate fields and bases go to build/gallery/.
 # Needs the dependencies of scripts/test.sh (run that, or scripts/demo.sh, once first).
@@ -11,7 +11,7 @@ tvf=build/tvf
 meshes=build/cgal-data/data/meshes
 elephant=$meshes/elephant.off
 knot=$meshes/knot1.off
-gallery=doc/gallery
+gallery=doc/tangent_vector_fields/gallery
 work=build/gallery
 mkdir -p "$gallery" "$work"
 # One camera for the elephant: from the side, a little above; y is up.
@@ -48,7 +48,7 @@ for k in 6 7 40 41; do
     --title "$type, λ·area = $(printf '%.4g' "$value")" -o $gallery/eigenfield_$k.png
 done
 
-echo "4. A designed field: vectors, a source and a vortex (doc/gallery/elephant_constraints.json)"
+echo "4. A designed field: vectors, a source and a vortex (doc/tangent_vector_fields/gallery/elephant_constraints.json)"
 $tvf design $elephant --constraints $gallery/elephant_constraints.json -q -o $work/designed.tvf
 $tvf render $elephant -q --field $work/designed.tvf --color curl --streamlines "${view[@]}" \
   --title "designed: 10 vectors, a source and a vortex" -o $gallery/designed.png

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The .tvfc file of `tvf compress` and `tvf decompress`: a field's lowest coefficients in a
-// spectral basis with the basis's signature (format in doc/manual.md).  Apart from the
+// spectral basis with the basis's signature (format in doc/tangent_vector_fields/manual.md).  Apart from the
 // subcommands so that the fuzzer (test/fuzz) reads it as the tool does.
 
 #ifndef TVF_TOOL_COEFFICIENT_FILE_H

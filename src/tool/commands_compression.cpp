@@ -57,7 +57,7 @@ int compress_command(const Arguments& args)
   Command_line command("tvf compress <mesh> --basis FILE (--field FILE | --field-ply NAME) (-k K | --max-error E) "
                        "-o FILE.tvfc",
                        "Keeps the K lowest coefficients of a field in a spectral basis and writes them to a small\n"
-                       "binary .tvfc file (format in doc/manual.md); prints the ratio and the relative L2 error.");
+                       "binary .tvfc file (format in doc/tangent_vector_fields/manual.md); prints the ratio and the relative L2 error.");
   command.positional("mesh", "the mesh file");
   add_basis_option(command, true);
   add_field_options(command);

@@ -33,7 +33,7 @@ int design_command(const Arguments& args)
   if(wants_n_field(args) || constraint_file_has_n(args)) return n_field_design_command(args);
   Command_line command(
       "tvf design <mesh> --constraints FILE.json [--basis FILE [-d D]] [--soft] [--omega W] -o FILE",
-      "Designs a field from constraints (vectors, directions, divergences, curls; JSON, see doc/manual.md).\n"
+      "Designs a field from constraints (vectors, directions, divergences, curls; JSON, see doc/tangent_vector_fields/manual.md).\n"
       "By default the tangent vector field spline at full resolution (min E_B + omega E_D subject to the\n"
       "constraints, exact); with --basis the same spline in the span of a spectral basis (the real-time\n"
       "editor's answer); with --soft the soft-constrained design of Fisher et al. (min E_D + omega E_B +\n"

@@ -281,7 +281,7 @@ int smoothest_command(const Arguments& args)
 int singularities_command(const Arguments& args)
 {
   Command_line command("tvf singularities <mesh> --n N --field FILE [--singularities FILE.sing]",
-                       "The index of an n-field at every vertex (interior and boundary; see doc/n_fields.md): lists the\n"
+                       "The index of an n-field at every vertex (interior and boundary; see doc/tangent_vector_fields/n_fields.md): lists the\n"
                        "singular vertices, checks Poincare-Hopf, and writes them as a .sing file or with the field.");
   command.positional("mesh", "the mesh file");
   add_symmetry_options(command);
@@ -321,14 +321,15 @@ int n_field_basis_command(const Arguments& args)
   command.positional("mesh", "the mesh file");
   add_symmetry_options(command);
   command.group("basis").add_options()
-    ("eigenfields,k", po::value<int>()->default_value(100)->value_name("K"), "the K lowest elements (rounded up to even)")
+    ("eigenfields,k", po::value<int>()->default_value(100)->value_name("K"),
+     "the K lowest elements (rounded up to even; -n K: the same, --n N is the symmetry)")
     ("tolerance", po::value<double>()->default_value(1e-10)->value_name("T"), "relative residual of every eigenpair")
     ("prescribed", po::value<std::string>()->value_name("FILE.sing"),
      "singularities prescribed in the connection (a .sing file; designs with the same \"singularities\" use the basis)")
     ("load", po::value<std::string>()->value_name("FILE"), "instead: load a basis and print its spectrum")
     ("list", po::value<int>()->default_value(16)->value_name("K"), "print the K lowest eigenvalues");
   command.group("output").add_options()("output,o", po::value<std::string>()->value_name("FILE"), "the basis (.tvfn)");
-  if(!command.parse(args)) return 0; // --help
+  if(!command.parse(with_basis_size_alias(args))) return 0; // --help
   command.exactly_one({"output", "load"});
   const Tool_mesh mesh(command.positional_value(), command.mollify());
   std::vector<std::pair<int, int>> prescribed;

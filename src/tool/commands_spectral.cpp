@@ -268,7 +268,7 @@ int decompose_command(const Arguments& args)
 int basis_command(const Arguments& args)
 {
   if(wants_n_field(args)) return n_field_basis_command(args);
-  Command_line command("tvf basis <mesh> -o FILE.tvfb [-n N | --exact N --coexact N | --max-eigenvalue L]",
+  Command_line command("tvf basis <mesh> -o FILE.tvfb [-k K | --exact N --coexact N | --max-eigenvalue L]",
                        "Computes the lowest eigenfields of the Hodge-Laplacian (harmonic fields first) by spectrum\n"
                        "slicing, with a proof of completeness (Sylvester inertia), and saves them to a binary .tvfb\n"
                        "file that 'filter', 'compress', 'design --basis' and 'eigenfield' read.  A progress bar is\n"
@@ -276,7 +276,7 @@ int basis_command(const Arguments& args)
                        "'tvf basis --n 4 --help').");
   command.positional("mesh", "the mesh file");
   command.group("basis").add_options()
-    ("eigenfields,n", po::value<int>()->default_value(100)->value_name("N"), "the N lowest eigenfields")
+    ("eigenfields,k", po::value<int>()->default_value(100)->value_name("K"), "the K lowest eigenfields (-n K: the same)")
     ("exact", po::value<int>()->value_name("N"), "instead: N exact eigenfields (with --coexact), plus all harmonic ones")
     ("coexact", po::value<int>()->value_name("N"), "instead: N coexact eigenfields (with --exact)")
     ("max-eigenvalue", po::value<double>()->value_name("L"),
@@ -288,7 +288,7 @@ int basis_command(const Arguments& args)
                                         "the basis file (.tvfb)")(
       "float32", "store the eigenfunctions in float32: half the file and memory; each entry is rounded, which adds "
                  "a relative error of 1e-5 to 2e-4 to every field (20k to 346k faces; the reduction error is 1e-2 or more)");
-  if(!command.parse(args)) return 0; // --help
+  if(!command.parse(with_basis_size_alias(args))) return 0; // --help
   command.require("output");
   command.at_most_one({"eigenfields", "exact", "max-eigenvalue"});
   command.at_most_one({"eigenfields", "coexact", "max-eigenvalue"});

@@ -3,7 +3,7 @@
 //
 // Reading a mesh file as CGAL reads it, a polygon soup (before any repair), with the face
 // fields a PLY file stores as face properties.  No Surface_mesh here: tool_mesh.cpp makes
-// the mesh (polygon_soup_to_mesh).
+// the mesh (Model_reduction::polygon_soup_to_mesh).
 
 #ifndef TVF_TOOL_MESH_INPUT_H
 #define TVF_TOOL_MESH_INPUT_H

@@ -11,7 +11,7 @@
 #ifndef TVF_TOOL_TOOL_H
 #define TVF_TOOL_TOOL_H
 
-#include <CGAL/Tangent_vector_fields/Mesh_repair_report.h>
+#include <CGAL/Model_reduction/Mesh_repair_report.h>
 #include <CGAL/Tangent_vector_fields/Operator_matrices.h>
 
 #include <Eigen/Core>
@@ -35,6 +35,7 @@ class Eigenfield_basis;
 namespace tvf_tool {
 
 namespace TVF = CGAL::Tangent_vector_fields;
+namespace MR = CGAL::Model_reduction;
 namespace po = boost::program_options;
 
 /// A bad command line (unknown option, missing or contradictory options): exit code 2.
@@ -86,6 +87,10 @@ int n_field_streamlines_command(const Arguments&);
 int n_field_render_command(const Arguments&);
 bool wants_n_field(const Arguments& args);
 bool constraint_file_has_n(const Arguments& args);
+
+/// The basis size is `-k K` (`--eigenfields K`) in every command; `-n K`, the vector-field
+/// basis' old spelling, is accepted for it everywhere (`--n N` stays the symmetry).
+Arguments with_basis_size_alias(const Arguments& args);
 
 /// \brief The command line of one subcommand: options, one positional argument, `--help`.
 ///
@@ -197,7 +202,7 @@ struct Named_field
 
 /// \brief A mesh read from a file, repaired, checked, with its operators.
 ///
-/// The file is read as a polygon soup and made a triangle mesh by `polygon_soup_to_mesh`
+/// The file is read as a polygon soup and made a triangle mesh by `Model_reduction::polygon_soup_to_mesh`
 /// (polygons triangulated, orientations made consistent, non-manifold vertices and edges
 /// cut apart), with a warning naming the changes; with `--strict` (`strict_mesh_input()`)
 /// a file that needs any of that is refused instead.  Fields given per polygon of the
@@ -225,7 +230,7 @@ public:
   /// Vertices of the mesh, including those in no face.
   int number_of_file_vertices() const;
   /// What the repair of the file changed (`changed()` is false for a file taken as it is).
-  const TVF::Mesh_repair_report& repair_report() const;
+  const MR::Mesh_repair_report& repair_report() const;
   /// Names of the face fields stored as PLY face properties `name_x`, `name_y`, `name_z`.
   std::vector<std::string> face_fields_in_file() const;
 

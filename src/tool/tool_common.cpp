@@ -322,4 +322,15 @@ std::string one_line(std::string text)
   return out;
 }
 
+Arguments with_basis_size_alias(const Arguments& args)
+{
+  Arguments out = args;
+  for(std::string& a : out)
+  {
+    if(a == "--") break; // what follows is positional
+    if(a.size() >= 2 && a[0] == '-' && a[1] == 'n') a[1] = 'k'; // "-n 300" and "-n300"; not "--n"
+  }
+  return out;
+}
+
 } // namespace tvf_tool

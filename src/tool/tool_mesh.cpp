@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The one translation unit of the tool that includes Surface_mesh: the mesh made from the
-// file's polygon soup (polygon_soup_to_mesh, which repairs it), and the field files that
+// file's polygon soup (Model_reduction::polygon_soup_to_mesh, which repairs it), and the field files that
 // need the mesh type (.tvf, .rawfield, .vtp, PLY properties), fields given per polygon of
 // the file mapped to the faces they became.
 
@@ -15,7 +15,7 @@
 #include <CGAL/Tangent_vector_fields/Discrete_operators.h>
 #include <CGAL/Tangent_vector_fields/face_field_io.h>
 #include <CGAL/Tangent_vector_fields/field_export.h>
-#include <CGAL/Tangent_vector_fields/polygon_soup_to_mesh.h>
+#include <CGAL/Model_reduction/polygon_soup_to_mesh.h>
 
 #include <cerrno>
 #include <cmath>
@@ -43,7 +43,7 @@ typedef std::vector<std::array<double, 3>> Vectors;
 // The mesh of a file: its polygon soup made a triangle mesh (repaired, unless `strict`),
 // with the file's face fields (PLY) as face properties `f:NAME_x`, ... mapped to the faces.
 // `polygon_of_face[f]` is the polygon of the file that face `f` comes from.
-void load_mesh(const std::string& path, bool strict, Mesh& mesh, TVF::Mesh_repair_report& report,
+void load_mesh(const std::string& path, bool strict, Mesh& mesh, MR::Mesh_repair_report& report,
                std::vector<std::size_t>& polygon_of_face)
 {
   const Mesh_file file = read_mesh_file(path);
@@ -51,7 +51,7 @@ void load_mesh(const std::string& path, bool strict, Mesh& mesh, TVF::Mesh_repai
   auto origin = mesh.add_property_map<Face_index, std::size_t>("f:tvf_polygon", 0).first;
   try
   {
-    report = TVF::polygon_soup_to_mesh(file.points, file.polygons, mesh, TVF::parameters::face_to_polygon_map(origin));
+    report = MR::polygon_soup_to_mesh(file.points, file.polygons, mesh, TVF::parameters::face_to_polygon_map(origin));
   }
   catch(const TVF::Invalid_mesh& e)
   {
@@ -134,7 +134,7 @@ struct Tool_mesh::Impl
 {
   std::string path;
   Mesh mesh;
-  TVF::Mesh_repair_report repair;
+  MR::Mesh_repair_report repair;
   std::vector<std::size_t> polygon_of_face;
   std::unique_ptr<TVF::Discrete_operators<Mesh>> operators;
 
@@ -215,7 +215,7 @@ double Tool_mesh::bounding_box_diagonal() const
 
 int Tool_mesh::number_of_file_vertices() const { return static_cast<int>(impl_->mesh.number_of_vertices()); }
 
-const TVF::Mesh_repair_report& Tool_mesh::repair_report() const { return impl_->repair; }
+const MR::Mesh_repair_report& Tool_mesh::repair_report() const { return impl_->repair; }
 
 std::vector<std::string> Tool_mesh::face_fields_in_file() const { return face_field_names(impl_->mesh); }
 

@@ -1,15 +1,15 @@
 // Copyright (c) 2026 The Tangent_vector_fields authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// tvf: tangent vector fields on triangle meshes from the command line.  One binary
-// with subcommands (tvf <command> --help for each); errors end the program with a
+// tvf: the thesis' systems on triangle meshes from the command line.  One binary with
+// subcommands grouped by system (tvf <command> --help for each); errors end the program with a
 // one-line reason on stderr, "tvf: error: ...", and a non-zero exit code (2 for a
 // bad command line, 1 for anything else).
 
 #include "tool.h"
 
 #include <CGAL/Tangent_vector_fields/errors.h>
-#include <CGAL/Tangent_vector_fields/keep_freed_memory.h>
+#include <CGAL/Model_reduction/keep_freed_memory.h>
 
 #include <cstdio>
 #include <iostream>
@@ -19,13 +19,24 @@ namespace {
 
 using namespace tvf_tool;
 
-const std::vector<Subcommand>& subcommands()
+// The commands, by system of the thesis.  A chapter adds its commands as one more entry
+// (doc/tangent_vector_fields/manual.md, "One tool"): its names must not clash with the others', since every
+// command is called as `tvf <command>`.
+struct Command_system
 {
-  static const std::vector<Subcommand> list = {
-      {"info", "size, topology (components, genus, boundary loops, harmonic dimension) and warnings of a mesh",
+  const char* title;
+  std::vector<Subcommand> commands;
+};
+
+const std::vector<Command_system>& systems()
+{
+  static const std::vector<Command_system> list = {
+    {"Tangent vector fields and n-direction fields (Chapters 1-2, CGAL Tangent_vector_fields)",
+     {{"info", "size, topology (components, genus, boundary loops, harmonic dimension) and warnings of a mesh",
        info_command},
       {"decompose", "Hodge decomposition of a field into exact, coexact and harmonic parts", decompose_command},
-      {"basis", "compute the lowest eigenfields of the Hodge-Laplacian and save them (.tvfb)", basis_command},
+      {"basis", "compute the lowest eigenfields of the Hodge-Laplacian and save them (.tvfb; --n N: .tvfn)",
+       basis_command},
       {"basis-info", "load a saved basis, check it against its mesh, print its spectrum", basis_info_command},
       {"eigenfield", "write one eigenfield of a saved basis as a field file", eigenfield_command},
       {"filter", "spectral filtering of a field: low-pass, high-pass, exact or coexact part", filter_command},
@@ -39,8 +50,9 @@ const std::vector<Subcommand>& subcommands()
       {"smoothest", "the smoothest n-direction field (--n 4: cross field), optionally aligned to the curvature",
        smoothest_command},
       {"singularities", "the singular vertices of an n-field with their indices (.sing), Poincare-Hopf checked",
-       singularities_command},
-      {"serve", "start the interactive field editor (a local web server and page)", serve_command}};
+       singularities_command}}},
+    {"The viewer (every system)",
+     {{"serve", "start the interactive viewer: a local web server and page (field editing today)", serve_command}}}};
   return list;
 }
 
@@ -48,24 +60,29 @@ void print_usage(std::ostream& out)
 {
   out << "usage: tvf <command> <mesh> [options]\n"
          "       tvf <command> --help     the options of a command\n\n"
-         "Tangent vector fields on triangle meshes (CGAL Tangent_vector_fields): Hodge decomposition,\n"
-         "Hodge-Laplace eigenfields (filtering, compression), field design, streamlines and pictures.\n"
-         "Meshes: any file CGAL::IO::read_polygon_mesh reads (.off, .obj, .ply, .stl, .ts); face fields:\n"
-         ".tvf, .ply face properties, .vtp, .rawfield.  Face, vertex and edge indices are those of the\n"
-         "mesh file's order.\n\ncommands:\n";
-  for(const Subcommand& c : subcommands())
+         "The systems of the thesis 'Model Reduction for Interactive Geometry Processing' on CGAL\n"
+         "meshes, one command-line tool with a group of commands per system.  Meshes: any file\n"
+         "CGAL::IO::read_polygon_soup reads (.off, .obj, .ply, .stl, ...), repaired into a triangle mesh\n"
+         "with a warning (or refused with --strict); face, vertex and edge indices are those of the\n"
+         "mesh file's order.  Face fields: .tvf, .ply face properties, .vtp, .rawfield.\n\ncommands:\n";
+  for(const Command_system& system : systems())
   {
-    char line[160];
-    std::snprintf(line, sizeof line, "  %-12s %s\n", c.name, c.summary);
-    out << line;
+    out << "\n" << system.title << ":\n";
+    for(const Subcommand& c : system.commands)
+    {
+      char line[160];
+      std::snprintf(line, sizeof line, "  %-14s %s\n", c.name, c.summary);
+      out << line;
+    }
   }
   out << "\nexit codes: 0 success, 1 failure (the reason on stderr), 2 bad command line\n";
 }
 
 const Subcommand* find_command(const std::string& name)
 {
-  for(const Subcommand& c : subcommands())
-    if(name == c.name) return &c;
+  for(const Command_system& system : systems())
+    for(const Subcommand& c : system.commands)
+      if(name == c.name) return &c;
   return nullptr;
 }
 
@@ -81,7 +98,7 @@ int fail(int code, const std::string& reason)
 int main(int argc, char** argv)
 {
   // Interactive commands (serve, design) allocate and free blocks of a few MB per edit.
-  CGAL::Tangent_vector_fields::keep_freed_memory();
+  CGAL::Model_reduction::keep_freed_memory();
   std::vector<std::string> args(argv + 1, argv + argc);
   if(args.empty()) return fail(2, "no command given (run 'tvf --help' for the list of commands)");
   std::string name = args.front();

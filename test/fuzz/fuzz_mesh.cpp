@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The mesh path of the tool: a file (the first byte picks OFF, OBJ, PLY, STL or GOCAD and
-// --mollify; the rest is the file) through CGAL's readers, polygon_soup_to_mesh's repair and
+// --mollify; the rest is the file) through CGAL's readers, Model_reduction::polygon_soup_to_mesh's repair and
 // the package's checks to the operators (Tool_mesh), then a Hodge decomposition on small
 // meshes.  A mesh is refused with Tool_error, or gives finite operators and parts.
 

@@ -3,10 +3,14 @@
 
 #include "test_meshes.h"
 
+#include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <algorithm>
+#include <cmath>
+#include <iterator>
 #include <fstream>
 
 namespace tvf_test {
@@ -344,6 +348,121 @@ Polygon_soup make_moebius_strip(int n)
     soup.polygons.push_back({a, d, b});
   }
   return soup;
+}
+
+} // namespace tvf_test
+
+namespace tvf_test {
+
+namespace {
+
+// The cotangent of the angle at corner `c` of triangle (a, b, c).
+double cotangent_at(const Point_3& a, const Point_3& b, const Point_3& c)
+{
+  const Vector_3 u = a - c, v = b - c;
+  return (u * v) / std::sqrt(CGAL::cross_product(u, v).squared_length());
+}
+
+typedef std::vector<Eigen::Triplet<double>> Triplets;
+
+// The P1 stiffness of one triangle's corners (i, j, k): off-diagonal -cot/2 of the third corner.
+void add_cotan_stiffness(const std::array<int, 3>& idx, const std::array<Point_3, 3>& p, double scale, Triplets& t)
+{
+  for(int k = 0; k < 3; ++k)
+  {
+    const int i = (k + 1) % 3, j = (k + 2) % 3;
+    const double w = 0.5 * scale * cotangent_at(p[i], p[j], p[k]);
+    t.emplace_back(idx[i], idx[j], -w);
+    t.emplace_back(idx[j], idx[i], -w);
+    t.emplace_back(idx[i], idx[i], w);
+    t.emplace_back(idx[j], idx[j], w);
+  }
+}
+
+double face_area(const Mesh& mesh, Face_index f, std::array<Vertex_index, 3>& v)
+{
+  int k = 0;
+  for(Vertex_index x : vertices_around_face(mesh.halfedge(f), mesh)) v[k++] = x;
+  return 0.5 * std::sqrt(CGAL::cross_product(mesh.point(v[1]) - mesh.point(v[0]),
+                                             mesh.point(v[2]) - mesh.point(v[0])).squared_length());
+}
+
+} // namespace
+
+Sparse_eigenproblem cotan_vertex_problem(const Mesh& mesh)
+{
+  const int n = int(mesh.number_of_vertices());
+  Sparse_eigenproblem p;
+  p.d = Eigen::VectorXd::Zero(n);
+  Triplets t;
+  for(Face_index f : mesh.faces())
+  {
+    std::array<Vertex_index, 3> v;
+    const double area = face_area(mesh, f, v);
+    std::array<int, 3> idx;
+    std::array<Point_3, 3> pts;
+    for(int k = 0; k < 3; ++k)
+    {
+      idx[k] = int(v[k]);
+      pts[k] = mesh.point(v[k]);
+      p.d[idx[k]] += area / 3;
+    }
+    add_cotan_stiffness(idx, pts, 1.0, t);
+  }
+  p.A.resize(n, n);
+  p.A.setFromTriplets(t.begin(), t.end());
+  p.kernel = Eigen::MatrixXd::Ones(n, 1);
+  return p;
+}
+
+Sparse_eigenproblem crouzeix_raviart_edge_problem(const Mesh& mesh)
+{
+  // Interior edges numbered in edge order; boundary edges get -1 and are dropped.
+  std::vector<int> interior(mesh.number_of_edges(), -1);
+  int n = 0;
+  for(Edge_index e : mesh.edges())
+    if(!mesh.is_border(e)) interior[std::size_t(e)] = n++;
+  Sparse_eigenproblem p;
+  p.d = Eigen::VectorXd::Zero(n);
+  Triplets all;
+  for(Face_index f : mesh.faces())
+  {
+    std::array<Vertex_index, 3> v;
+    const double area = face_area(mesh, f, v);
+    std::array<int, 3> idx;
+    std::array<Point_3, 3> pts;
+    for(int k = 0; k < 3; ++k)
+    {
+      // The edge opposite corner k joins the other two corners.
+      const auto h = mesh.halfedge(v[(k + 1) % 3], v[(k + 2) % 3]);
+      idx[k] = interior[std::size_t(mesh.edge(h))];
+      pts[k] = mesh.point(v[k]);
+      if(idx[k] >= 0) p.d[idx[k]] += area / 3;
+    }
+    Triplets t;
+    add_cotan_stiffness(idx, pts, 4.0, t);
+    for(const auto& x : t)
+      if(x.row() >= 0 && x.col() >= 0) all.push_back(x);
+  }
+  p.A.resize(n, n);
+  p.A.setFromTriplets(all.begin(), all.end());
+  const bool closed = n == int(mesh.number_of_edges());
+  p.kernel = closed ? Eigen::MatrixXd::Ones(n, 1) : Eigen::MatrixXd(n, 0);
+  return p;
+}
+
+Mesh_counts count_topology(const Mesh& mesh)
+{
+  Mesh_counts c;
+  Mesh scratch = mesh; // for the component map, so that the caller's mesh is not touched
+  auto component = scratch.add_property_map<Face_index, std::size_t>("f:component", 0).first;
+  c.components = int(CGAL::Polygon_mesh_processing::connected_components(scratch, component));
+  std::vector<Mesh::Halfedge_index> cycles;
+  CGAL::Polygon_mesh_processing::extract_boundary_cycles(scratch, std::back_inserter(cycles));
+  c.boundary_loops = int(cycles.size());
+  const int chi = int(mesh.number_of_vertices()) - int(mesh.number_of_edges()) + int(mesh.number_of_faces());
+  c.genus = (2 * c.components - c.boundary_loops - chi) / 2;
+  return c;
 }
 
 } // namespace tvf_test

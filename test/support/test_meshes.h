@@ -10,6 +10,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 
 #include <cmath>
 #include <map>
@@ -94,6 +95,34 @@ Polygon_soup make_double_cone(int n);
 
 /// A Moebius strip of `n` quads, each split into two triangles (a non-orientable surface).
 Polygon_soup make_moebius_strip(int n);
+
+/// A generalised eigenproblem `A x = lambda diag(d) x` with a basis of its kernel, assembled
+/// here from the geometry alone, so that the shared eigensolver is tested without any chapter.
+struct Sparse_eigenproblem
+{
+  Eigen::SparseMatrix<double> A;
+  Eigen::VectorXd d;
+  Eigen::MatrixXd kernel;
+};
+
+/// Cotangent Laplacian on the vertices and a third of the adjacent faces' area as mass;
+/// kernel: the constants (one connected component, every vertex in a face assumed).
+Sparse_eigenproblem cotan_vertex_problem(const Mesh& mesh);
+
+/// Crouzeix-Raviart Laplacian on the interior edges (basis function `1 - 2 lambda_a` for the
+/// edge opposite vertex `a`, so four times the cotangent stiffness of the vertices facing
+/// each other), a third of the adjacent faces' area as mass; kernel: the constants on a
+/// closed mesh, none with a boundary (the functions vanish on boundary edges).
+Sparse_eigenproblem crouzeix_raviart_edge_problem(const Mesh& mesh);
+
+/// Components, boundary loops and total genus, from CGAL's own functions and Euler's formula.
+struct Mesh_counts
+{
+  int components = 0;
+  int boundary_loops = 0;
+  int genus = 0;
+};
+Mesh_counts count_topology(const Mesh& mesh);
 
 } // namespace tvf_test
 

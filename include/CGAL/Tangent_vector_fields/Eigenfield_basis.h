@@ -24,11 +24,13 @@
 #include <vector>
 
 namespace CGAL {
-namespace Tangent_vector_fields {
-
+namespace Model_reduction {
 namespace internal {
-class Binary_reader;
+class Binary_reader; // <CGAL/Model_reduction/internal/binary_file.h>
 }
+} // namespace Model_reduction
+
+namespace Tangent_vector_fields {
 
 /// The three kinds of eigenfields (SPEC 5).
 enum class Eigenfield_type : std::uint8_t {
@@ -84,13 +86,13 @@ struct Basis_options
 {
   /// Relative residual required of every eigenpair (on the unit-area problem).
   double tolerance = 1e-10;
-  /// Vectors per Lanczos block (see `Eigensolver_options::block_size`).
+  /// Vectors per Lanczos block (see `Model_reduction::Eigensolver_options::block_size`).
   int block_size = 4;
-  /// When a window's Krylov basis is restarted (see `Eigensolver_options::restart_per_pair`;
+  /// When a window's Krylov basis is restarted (see `Model_reduction::Eigensolver_options::restart_per_pair`;
   /// 0: never).
   double restart_per_pair = 1.3;
   std::uint64_t seed = 1;
-  /// Threads of the eigensolver (see `Eigensolver_options::threads`; 0: one per core).
+  /// Threads of the eigensolver (see `Model_reduction::Eigensolver_options::threads`; 0: one per core).
   int threads = 0;
   std::function<void(const Spectral_progress&)> progress;
 };
@@ -144,7 +146,7 @@ public:
   ///         that is not positive, elements out of order or listed twice, an element
   ///         whose norm is not 1.
   static Eigenfield_basis load(std::shared_ptr<const Hodge_solver> solver, const std::string& path);
-  /// Writes the basis to a binary file (format in `doc/manual.md`).
+  /// Writes the basis to a binary file (format in `doc/tangent_vector_fields/manual.md`).
   void save(const std::string& path) const;
 
   const Operator_matrices& operators() const { return solver_->operators(); }
@@ -214,7 +216,7 @@ private:
   void merge(int count); // fills order_ and values_ with the `count` lowest elements
   void update_values();  // values_ from order_
   // After `load`: positive eigenvalues, in order, each element once and of unit norm.
-  void check_loaded(internal::Binary_reader& reader) const;
+  void check_loaded(Model_reduction::internal::Binary_reader& reader) const;
 
   std::shared_ptr<const Hodge_solver> solver_;
   Eigenfunction_matrix exact_functions_, coexact_functions_;

@@ -13,11 +13,13 @@
 #include <iosfwd>
 
 namespace CGAL {
-namespace Tangent_vector_fields {
-
+namespace Model_reduction {
 namespace internal {
-class Binary_reader;
+class Binary_reader; // <CGAL/Model_reduction/internal/binary_file.h>
 }
+} // namespace Model_reduction
+
+namespace Tangent_vector_fields {
 
 /// How a basis stores its eigenfunctions.
 enum class Eigenfunction_precision
@@ -76,7 +78,7 @@ public:
   /// Writes a precision byte (0: float64, 1: float32), the size, then the column-major entries.
   void write(std::ostream& out) const;
   /// Reads what `write` wrote (`rows`/`cols` < 0: any).
-  static Eigenfunction_matrix read(internal::Binary_reader& in, Eigen::Index rows, Eigen::Index cols, const char* what);
+  static Eigenfunction_matrix read(Model_reduction::internal::Binary_reader& in, Eigen::Index rows, Eigen::Index cols, const char* what);
 
 private:
   Eigenfunction_precision precision_ = Eigenfunction_precision::float64;

@@ -10,7 +10,7 @@
 /// use and kept for later decompositions.
 
 #include <CGAL/Tangent_vector_fields/Operator_matrices.h>
-#include <CGAL/Tangent_vector_fields/Sparse_spd_solver.h>
+#include <CGAL/Model_reduction/Sparse_spd_solver.h>
 
 #include <Eigen/Core>
 

@@ -53,7 +53,7 @@ public:
   ///         boundary condition or mesh, or corrupt: an odd number of elements, an element
   ///         whose norm is not 1.
   static N_field_basis load(std::shared_ptr<const N_field_operators> operators, const std::string& path);
-  /// Writes the basis to a binary file (format in `doc/manual.md`).
+  /// Writes the basis to a binary file (format in `doc/tangent_vector_fields/manual.md`).
   void save(const std::string& path) const;
 
   const N_field_operators& operators() const { return *operators_; }

@@ -21,7 +21,7 @@ struct Smoothest_n_field_options
   Eigen::VectorXd alignment;
   /// `s` of `E_D(z) + s |z - guide|^2_MX` for the mesh scaled to unit area.
   double alignment_weight = 1;
-  /// Relative residual required of the eigenpair (see `Eigensolver_options::tolerance`).
+  /// Relative residual required of the eigenpair (see `Model_reduction::Eigensolver_options::tolerance`).
   double tolerance = 1e-10;
 };
 

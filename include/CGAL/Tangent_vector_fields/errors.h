@@ -5,74 +5,20 @@
 #define CGAL_TANGENT_VECTOR_FIELDS_ERRORS_H
 
 /// \file errors.h
-/// The exceptions this package throws.  Every check happens before any output
-/// map is written, so a throwing call leaves the user's maps untouched.
+/// The exceptions this package throws: the shared ones of <CGAL/Model_reduction/errors.h>,
+/// named in this namespace too so that a user catches `TVF::Invalid_mesh` without knowing
+/// which package underneath refused the input.
 
-#include <stdexcept>
-#include <string>
+#include <CGAL/Model_reduction/errors.h>
 
 namespace CGAL {
 namespace Tangent_vector_fields {
 
-/// What is wrong with a mesh that the package refuses.
-enum class Mesh_defect {
-  empty,                    ///< no faces
-  non_triangle_face,        ///< a face with other than three vertices
-  non_manifold_edge,        ///< an edge shared by more than two faces
-  non_manifold_vertex,      ///< a vertex whose faces form more than one fan
-  inconsistent_orientation, ///< two faces traverse their common edge in the same direction
-  garbage,                  ///< removed elements still stored (call `collect_garbage()`)
-  invalid_index,            ///< an element index outside `[0, n)` or repeated
-  non_finite_coordinate,    ///< a NaN or infinite vertex coordinate
-  degenerate_face,          ///< a face of (nearly) zero area; see `use_intrinsic_mollification`
-  unrepresentable_size      ///< a face whose area is too small or too large for a normal double (edges
-                            ///< outside about 1e-150 to 1e150): scale the mesh
-};
-
-/// Thrown when a mesh cannot be processed; `defect()` says why and the message names the element.
-class Invalid_mesh : public std::invalid_argument
-{
-public:
-  Invalid_mesh(Mesh_defect defect, const std::string& what)
-    : std::invalid_argument(what), defect_(defect) {}
-  Mesh_defect defect() const { return defect_; }
-
-private:
-  Mesh_defect defect_;
-};
-
-/// Thrown for bad arguments other than the mesh: a field with NaN entries, a
-/// vector of the wrong size, an out-of-range option.
-class Invalid_input : public std::invalid_argument
-{
-public:
-  using std::invalid_argument::invalid_argument;
-};
-
-/// Thrown when a set of field-design constraints cannot be met: a new constraint
-/// repeats or contradicts earlier ones (its rows depend on theirs), or the basis is
-/// too small to satisfy that many independent constraints.  The constraint is not added.
-class Infeasible_constraints : public Invalid_input
-{
-public:
-  Infeasible_constraints(const std::string& what, double independence, double residual)
-    : Invalid_input(what), independence_(independence), residual_(residual) {}
-  /// `sin^2` of the angle between the new rows and the span of the others (0: dependent).
-  double independence() const { return independence_; }
-  /// How far the requested value is from the one the other constraints already imply.
-  double residual() const { return residual_; }
-
-private:
-  double independence_, residual_;
-};
-
-/// Thrown when a numerical self-check fails: a factorisation breaks down, or the
-/// computed harmonic space does not have the dimension the topology predicts.
-class Numerical_failure : public std::runtime_error
-{
-public:
-  using std::runtime_error::runtime_error;
-};
+using Model_reduction::Infeasible_constraints;
+using Model_reduction::Invalid_input;
+using Model_reduction::Invalid_mesh;
+using Model_reduction::Mesh_defect;
+using Model_reduction::Numerical_failure;
 
 } // namespace Tangent_vector_fields
 } // namespace CGAL

@@ -141,7 +141,7 @@ void read_face_field(std::istream& in, const TriangleMesh& mesh, FaceVectorMap f
 }
 
 /// Reads the vectors of a file in the text format without a mesh: one per face, in the
-/// file's order (for a field given per polygon of a file that `polygon_soup_to_mesh`
+/// file's order (for a field given per polygon of a file that `Model_reduction::polygon_soup_to_mesh`
 /// repaired, and mapped to the faces with its `face_to_polygon_map`).
 /// \throws Invalid_input for a wrong header, missing or non-finite numbers.
 inline std::vector<std::array<double, 3>> read_face_vectors(std::istream& in)

@@ -9,7 +9,7 @@
 /// energies of field design: `E_B + omega E_D` (splines) and `E_D + omega E_B` (soft design).
 
 #include <CGAL/Tangent_vector_fields/Hodge_solver.h>
-#include <CGAL/Tangent_vector_fields/Sparse_spd_solver.h>
+#include <CGAL/Model_reduction/Sparse_spd_solver.h>
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>

@@ -5,7 +5,7 @@
 #define CGAL_TANGENT_VECTOR_FIELDS_INTERNAL_SPLINE_SOLVER_IMPL_H
 
 // The definitions of Basic_spline_solver, included only by the translation units that
-// instantiate it (src/design/spline_solver.cpp, src/n_fields/n_field_spline_solver.cpp).
+// instantiate it (src/tangent_vector_fields/design/spline_solver.cpp, src/tangent_vector_fields/n_fields/n_field_spline_solver.cpp).
 
 #include <CGAL/Tangent_vector_fields/Spline_solver.h>
 #include <CGAL/Tangent_vector_fields/errors.h>

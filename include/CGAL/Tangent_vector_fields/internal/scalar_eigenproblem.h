@@ -6,10 +6,10 @@
 
 // The two scalar eigenproblems behind the eigenfield basis, exactly as its eigensolver
 // receives them.  Shared by `Eigenfield_basis` and the benchmarks that compare other
-// eigensolvers on the same matrices (bench/slepc_side_by_side.cpp).
+// eigensolvers on the same matrices (bench/tangent_vector_fields/slepc_side_by_side.cpp).
 
 #include <CGAL/Tangent_vector_fields/Eigenfield_basis.h>
-#include <CGAL/Tangent_vector_fields/Generalized_eigensolver.h>
+#include <CGAL/Model_reduction/Generalized_eigensolver.h>
 #include <CGAL/Tangent_vector_fields/Operator_matrices.h>
 
 #include <Eigen/Core>
@@ -32,7 +32,7 @@ struct Scalar_eigenproblem
   Eigen::Index full_size = 0;
   double area = 1;
 
-  /// Eigenpairs outside the kernel.
+  /// Model_reduction::Eigenpairs outside the kernel.
   int available() const { return static_cast<int>(A.rows() - kernel.cols()); }
 
   /// Rows of `X` (one per unknown) put back at their positions in the full vector, zero elsewhere.
@@ -50,7 +50,7 @@ struct Scalar_eigenproblem
 Scalar_eigenproblem scalar_eigenproblem(const Operator_matrices& ops, Eigenfield_type type, double area);
 
 /// The eigensolver settings the basis uses for `options` (without progress reports).
-Eigensolver_options eigensolver_options(const Basis_options& options);
+Model_reduction::Eigensolver_options eigensolver_options(const Basis_options& options);
 
 } // namespace internal
 } // namespace Tangent_vector_fields

@@ -1,0 +1,230 @@
+// Copyright (c) 2026 The Tangent_vector_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+// Dense products with the basis go to the BLAS.
+#define EIGEN_USE_BLAS
+
+#include <CGAL/Tangent_vector_fields/N_field_basis.h>
+#include <CGAL/Model_reduction/Generalized_eigensolver.h>
+#include <CGAL/Tangent_vector_fields/errors.h>
+#include <CGAL/Tangent_vector_fields/internal/basis_file.h>
+#include <CGAL/Tangent_vector_fields/internal/n_field_pairs.h>
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+
+namespace CGAL {
+namespace Tangent_vector_fields {
+
+namespace internal {
+
+int pair_up(const Eigen::VectorXd& values, const Eigen::MatrixXd& vectors, const Eigen::VectorXd& mass,
+            int count, Eigen::VectorXd& paired_values, Eigen::MatrixXd& paired)
+{
+  // A relative gap of 1e-6 separates different eigenvalues: the two of a pair agree to
+  // rounding (~1e-13), a split multiplet (sphere, l fixed) by the discretisation error,
+  // ~1e-3 or more.  Vectors of different eigenvalues are orthogonal already.
+  const double cluster_gap = 1e-6;
+  paired.resize(vectors.rows(), count);
+  paired_values.resize(count);
+  int filled = 0;
+  for(Eigen::Index i = 0; i < vectors.cols() && filled < count; ++i)
+  {
+    Eigen::VectorXd v = vectors.col(i);
+    int first = filled; // the chosen columns of the same eigenvalue
+    while(first > 0 && std::abs(paired_values[first - 1] - values[i]) <= cluster_gap * std::abs(values[i])) --first;
+    for(int pass = 0; pass < 2; ++pass) // twice: classical Gram-Schmidt loses orthogonality once
+      for(int j = first; j < filled; ++j) v -= paired.col(j).dot(mass.cwiseProduct(v)) * paired.col(j);
+    const double norm = std::sqrt(v.dot(mass.cwiseProduct(v)));
+    // What is left of a unit eigenvector already in the span of the chosen pairs is its
+    // error, ~ residual * lambda / gap, far below 1e-3; a new direction keeps far more.
+    if(!(norm > 1e-3)) continue;
+    v /= norm;
+    paired.col(filled) = v;
+    paired.col(filled + 1) = Operator_matrices::rotate(v);
+    paired_values[filled] = paired_values[filled + 1] = values[i];
+    filled += 2;
+  }
+  return filled;
+}
+
+} // namespace internal
+
+namespace {
+
+const char file_magic[8] = {'T', 'V', 'F', 'N', 'F', 'I', 'E', 'L'};
+const std::uint32_t file_version = 2; // 2: the prescribed singularities of the connection
+
+double total_area(const Intrinsic_mesh& mesh)
+{
+  double area = 0;
+  for(int f = 0; f < mesh.number_of_faces(); ++f) area += mesh.face_area(f);
+  return area;
+}
+
+} // namespace
+
+N_field_basis::N_field_basis(std::shared_ptr<const N_field_operators> operators) : operators_(std::move(operators))
+{
+  if(!operators_) throw Invalid_input("n-field basis: no operators given");
+}
+
+N_field_basis::N_field_basis(std::shared_ptr<const N_field_operators> operators, int count,
+                             const Basis_options& options)
+  : N_field_basis(std::move(operators))
+{
+  const auto start = std::chrono::steady_clock::now();
+  const N_field_operators& ops = *operators_;
+  const int dimension = static_cast<int>(ops.masses().size());
+  if(count < 1) throw Invalid_input("n-field basis: asked for " + std::to_string(count) + " elements");
+  // Checked before rounding up to a pair: ++INT_MAX would overflow past the check.
+  if(count > dimension)
+    throw Invalid_input("n-field basis: asked for " + std::to_string(count) + " elements but the space has dimension " +
+                        std::to_string(dimension));
+  if(count % 2) ++count; // the dimension 2 nf is even
+  const Matrix& kernel = ops.kernel();
+  kernel_dimension_ = static_cast<int>(std::min<Eigen::Index>(kernel.cols(), count));
+  const int wanted = count - kernel_dimension_;
+
+  // The problem on the mesh scaled to unit area: S_n does not change, the masses do.
+  const double area = total_area(ops.mesh());
+  Model_reduction::Eigensolver_options eigen_options;
+  eigen_options.tolerance = options.tolerance;
+  eigen_options.block_size = options.block_size;
+  eigen_options.seed = options.seed;
+  if(options.progress)
+    eigen_options.progress = [&](const Model_reduction::Eigensolver_progress& e) {
+      const double f = e.wanted > 0 ? std::min(1., double(e.converged) / e.wanted) : 1.;
+      options.progress({"n-field eigenpairs", f});
+    };
+  const Vector unit_mass = ops.masses() / area;
+  // Ask for one more than wanted when it is odd: the last pair then comes whole.
+  const int ask = std::min<int>(wanted + (wanted % 2), dimension - static_cast<int>(kernel.cols()));
+  const Model_reduction::Eigenpairs pairs = Model_reduction::lowest_eigenpairs(ops.S(), unit_mass, ask, kernel, eigen_options);
+
+  Vector values;
+  Matrix vectors;
+  const int filled = internal::pair_up(pairs.values, pairs.vectors, unit_mass, wanted, values, vectors);
+  if(filled < wanted)
+    throw Numerical_failure("n-field basis: the eigenvectors do not come in pairs (z, i z): " +
+                            std::to_string(filled) + " of " + std::to_string(wanted) + " paired");
+  fields_.resize(dimension, count);
+  values_.resize(count);
+  const double scale = 1 / std::sqrt(area); // unit-area MX-orthonormal -> MX-orthonormal
+  fields_.leftCols(kernel_dimension_) = kernel.leftCols(kernel_dimension_);
+  values_.head(kernel_dimension_).setZero();
+  fields_.rightCols(wanted) = vectors * scale;
+  values_.tail(wanted) = values / area;
+
+  report_.max_residual = pairs.residuals.size() ? pairs.residuals.maxCoeff() : 0.;
+  report_.complete_below = pairs.complete_below / area;
+  report_.inertia = pairs.completeness.inertia;
+  report_.expected = pairs.completeness.expected;
+  report_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+N_field_basis::Vector N_field_basis::coefficients(const Vector& z) const
+{
+  if(z.size() != fields_.rows())
+    throw Invalid_input("n-field basis: the field has " + std::to_string(z.size()) + " values, the basis " +
+                        std::to_string(fields_.rows()));
+  if(!z.allFinite()) throw Invalid_input("n-field basis: the field has non-finite entries");
+  return fields_.transpose() * operators_->masses().cwiseProduct(z);
+}
+
+N_field_basis::Vector N_field_basis::field(const Vector& a) const
+{
+  if(a.size() > size())
+    throw Invalid_input("n-field basis: " + std::to_string(a.size()) + " coefficients for a basis of " +
+                        std::to_string(size()));
+  if(!a.allFinite()) throw Invalid_input("n-field basis: the coefficients have non-finite entries");
+  return fields_.leftCols(a.size()) * a;
+}
+
+double N_field_basis::energy(const Vector& a, int m) const
+{
+  if(m < 1) throw Invalid_input("n-field basis energy: m must be at least 1");
+  if(a.size() > size())
+    throw Invalid_input("n-field basis energy: " + std::to_string(a.size()) + " coefficients for a basis of " +
+                        std::to_string(size()));
+  double e = 0;
+  for(Eigen::Index k = 0; k < a.size(); ++k) e += std::pow(values_[k], m) * a[k] * a[k];
+  return e;
+}
+
+void N_field_basis::save(const std::string& path) const
+{
+  using internal::write_matrix;
+  using internal::write_value;
+  std::ofstream out(path, std::ios::binary);
+  if(!out) throw Invalid_input("cannot write the n-field basis to '" + path + "'");
+  internal::write_header(out, file_magic, file_version, internal::mesh_identity(operators_->mesh()));
+  write_value<std::int32_t>(out, n());
+  write_value<std::int32_t>(out, static_cast<std::int32_t>(operators_->options().boundary));
+  // The connection: a basis of another set of prescribed singularities spans other fields.
+  const auto& singularities = operators_->options().singularities;
+  write_value<std::int32_t>(out, static_cast<std::int32_t>(singularities.size()));
+  for(const auto& [v, k] : singularities)
+  {
+    write_value<std::int32_t>(out, v);
+    write_value<std::int32_t>(out, k);
+  }
+  write_value<std::int32_t>(out, kernel_dimension_);
+  write_matrix(out, values_);
+  write_matrix(out, fields_);
+  for(double x : {report_.max_residual, report_.complete_below, report_.seconds}) write_value(out, x);
+  for(int x : {report_.inertia, report_.expected}) write_value<std::int32_t>(out, x);
+  out.write(file_magic, sizeof(file_magic));
+  if(!out) throw Invalid_input("writing the n-field basis to '" + path + "' failed");
+}
+
+N_field_basis N_field_basis::load(std::shared_ptr<const N_field_operators> operators, const std::string& path)
+{
+  N_field_basis basis(std::move(operators));
+  std::uint64_t bytes = 0;
+  std::ifstream in = internal::open_binary_file(path, "n-field basis", bytes);
+  internal::Binary_reader r(in, path, bytes, "n-field basis");
+  const N_field_operators& ops = basis.operators();
+  r.expect_header(file_magic, file_version, internal::mesh_identity(ops.mesh()));
+  const std::int32_t n = r.value<std::int32_t>();
+  if(n != ops.n()) r.fail("it holds " + std::to_string(n) + "-fields, not " + std::to_string(ops.n()) + "-fields");
+  if(r.value<std::int32_t>() != static_cast<std::int32_t>(ops.options().boundary))
+    r.fail("it was computed with another boundary condition");
+  const std::int32_t count = r.value<std::int32_t>();
+  if(count < 0 || count > ops.mesh().number_of_vertices()) r.fail("the file is corrupt (singularity count)");
+  std::vector<std::pair<int, int>> singularities(count);
+  for(auto& [v, k] : singularities)
+  {
+    v = r.value<std::int32_t>();
+    k = r.value<std::int32_t>();
+  }
+  if(singularities != ops.options().singularities)
+    r.fail("it was computed for a connection with " + std::to_string(count) +
+           " prescribed singularities, not these " + std::to_string(ops.options().singularities.size()) +
+           " (a basis belongs to one set of prescribed singularities)");
+  basis.kernel_dimension_ = r.value<std::int32_t>();
+  basis.values_ = r.matrix(-1, 1, "eigenvalues");
+  basis.fields_ = r.matrix(ops.masses().size(), basis.values_.size(), "eigenfields");
+  if(basis.kernel_dimension_ < 0 || basis.kernel_dimension_ > basis.size()) r.fail("inconsistent kernel dimension");
+  N_field_basis_report& rep = basis.report_;
+  for(double* x : {&rep.max_residual, &rep.complete_below, &rep.seconds}) *x = r.value<double>();
+  for(int* x : {&rep.inertia, &rep.expected}) *x = r.value<std::int32_t>();
+  r.expect_magic(file_magic, "the file is corrupt (no end marker)");
+  if(!basis.values_.allFinite() || !basis.fields_.allFinite()) r.fail("the file holds non-finite numbers");
+  // A basis comes in pairs (z, i z), each element of unit norm in the masses (as computed, to
+  // roundoff): a corrupt number in a field changes its norm (as Eigenfield_basis::load checks).
+  if(basis.size() % 2 != 0) r.fail("an odd number of elements (they come in pairs z, i z)");
+  const Vector& masses = ops.masses();
+  for(int k = 0; k < basis.size(); ++k)
+  {
+    const double norm = basis.fields_.col(k).cwiseAbs2().dot(masses);
+    if(!(std::abs(norm - 1) <= 1e-6))
+      r.fail("element " + std::to_string(k) + " has norm " + std::to_string(std::sqrt(norm)) +
+             " instead of 1 (the file is corrupt)");
+  }
+  return basis;
+}
+
+} // namespace Tangent_vector_fields
+} // namespace CGAL
