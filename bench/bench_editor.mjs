@@ -8,7 +8,7 @@
 // to it, for several basis sizes (error against run time).
 //
 //   node bench/bench_editor.mjs --tvf build/tvf --mesh M.off --basis M.tvfb --constraints C.json
-//        --node-modules build/editor/node_modules [--size 1000] [--sizes 250,500,1000]
+//        --node-modules build/viewer/node_modules [--size 1000] [--sizes 250,500,1000]
 //        [--edits 30] [--full yes] [--chromium /usr/bin/chromium] [--web-root DIR] [--n N]
 //
 // With --n N the session designs n-direction fields: the basis of n-fields is loaded from

@@ -26,12 +26,14 @@ function options(argv) {
 
 // One WebSocket connection: send(text), next(predicate) -> the next message it accepts.
 class Socket {
-  static open(port) {
+  // address: { port, token } from the address tvf serve printed.
+  static open(address) {
     return new Promise((resolve, reject) => {
-      const s = new Socket(net.connect(port, '127.0.0.1'));
+      const s = new Socket(net.connect(address.port, '127.0.0.1'));
       const key = crypto.randomBytes(16).toString('base64');
       s.socket.on('error', reject);
-      s.socket.once('connect', () => s.socket.write(`GET /ws HTTP/1.1\r\nHost: 127.0.0.1\r\nUpgrade: websocket\r\n` +
+      s.socket.once('connect', () => s.socket.write(`GET /ws?token=${address.token} HTTP/1.1\r\n` +
+        `Host: 127.0.0.1:${address.port}\r\nUpgrade: websocket\r\n` +
         `Connection: Upgrade\r\nSec-WebSocket-Key: ${key}\r\nSec-WebSocket-Version: 13\r\n\r\n`));
       s.onUpgrade = (status) => (status.includes(' 101 ') ? resolve(s) : reject(new Error(status)));
     });
@@ -120,8 +122,8 @@ const median = (v) => {
 };
 
 // A session: hello, a constraint set, the mode, then value edits for the round's seconds.
-async function session(port, o, exact, faces, latencies) {
-  const ws = await Socket.open(port);
+async function session(address, o, exact, faces, latencies) {
+  const ws = await Socket.open(address);
   let request = 1;
   // Sends `message` and waits for its answer: by default its field (the immediate one, not an
   // exact field that follows unasked).
@@ -164,18 +166,18 @@ async function main() {
   const o = options(process.argv);
   const server = spawn(o.tvf, ['serve', o.mesh, '--basis', o.basis, '-d', o.size, '--port', '0'],
     { stdio: ['ignore', 'pipe', 'inherit'] });
-  const port = await new Promise((resolve, reject) => {
+  const address = await new Promise((resolve, reject) => {
     let out = '';
     server.stdout.on('data', (d) => {
       out += d;
-      const m = out.match(/http:\/\/127\.0\.0\.1:(\d+)/);
-      if (m) resolve(Number(m[1]));
+      const m = out.match(/http:\/\/127\.0\.0\.1:(\d+)\/\?token=([0-9a-f]+)/);
+      if (m) resolve({ port: Number(m[1]), token: m[2] });
     });
     server.on('exit', (code) => reject(new Error(`tvf serve exited with ${code}`)));
   });
   try {
     // One session first: the basis is loaded (or computed) before anything is measured.
-    const first = await Socket.open(port);
+    const first = await Socket.open(address);
     first.send({ type: 'hello' });
     const info = await first.next((m) => m.type === 'info');
     await first.next((m) => m.type === 'field');
@@ -194,7 +196,7 @@ async function main() {
     for (const exact of [false, true]) {
       for (const n of [...o.sessions.split(',').map(Number), ...o.sessions.split(',').map(Number)]) {
         const latencies = [];
-        const results = await Promise.all(Array.from({ length: n }, () => session(port, o, exact, faces, latencies)));
+        const results = await Promise.all(Array.from({ length: n }, () => session(address, o, exact, faces, latencies)));
         // Edits per second of each session while it edited, summed.
         const rate = results.reduce((s, r) => s + r.edits / r.seconds, 0);
         const during = residentMegabytes(server.pid);

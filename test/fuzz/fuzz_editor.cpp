@@ -1,27 +1,28 @@
 // Copyright (c) 2026 The Tangent_vector_fields authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The editor's WebSocket messages, without sockets: every line of the input is a text
-// message to one session on the torus (what serve_command.cpp hands to `handle_text`), after
+// The field sessions' WebSocket messages, without sockets: every line of the input is a text
+// message to one session on the torus (what the server hands to `handle_text`), after
 // a hello and a display without lines.
 // Every answer must be a JSON object with a "type", or a well-formed binary message.
 
 #include "fuzz_support.h"
 
-#include "editor_messages.h"
+#include "field_session.h"
+#include "messages.h"
 
 #include <cstring>
 
 namespace {
 
-std::shared_ptr<const tvf_tool::Editor_model> torus_model()
+std::shared_ptr<const tvf_viewer::Field_model> torus_model()
 {
-  static const std::shared_ptr<tvf_tool::Editor_model> model = [] {
-    tvf_tool::Editor_limits limits;
+  static const std::shared_ptr<tvf_viewer::Field_model> model = [] {
+    tvf_viewer::Field_limits limits;
     limits.max_constraints = 50;
     limits.max_strokes = 2000; // streamlines on 80 faces: small caps keep executions fast
     limits.max_n = 6;
-    auto m = std::make_shared<tvf_tool::Editor_model>(tvf_fuzz::torus_operators(), tvf_fuzz::torus_hodge(), "torus",
+    auto m = std::make_shared<tvf_viewer::Field_model>(tvf_fuzz::torus_operators(), tvf_fuzz::torus_hodge(), "torus",
                                                       5.4, 16, limits);
     m->set_n_field_basis_source(
         [](std::shared_ptr<const CGAL::Tangent_vector_fields::N_field_operators> operators,
@@ -34,11 +35,11 @@ std::shared_ptr<const tvf_tool::Editor_model> torus_model()
   return model;
 }
 
-void check_answer(const tvf_tool::Outgoing& out)
+void check_answer(const tvf_viewer::Outgoing& out)
 {
   if(!out.binary)
   {
-    tvf_tool::Json answer;
+    tvf_viewer::Json answer;
     try
     {
       answer = CGAL::Tangent_vector_fields::internal::parse_json(out.data, "answer");
@@ -62,8 +63,8 @@ void check_answer(const tvf_tool::Outgoing& out)
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
   const std::string text = tvf_fuzz::input_text(data, size);
-  tvf_tool::Editor_session session(torus_model());
-  const tvf_tool::Send send = check_answer;
+  tvf_viewer::Field_session session(torus_model());
+  const tvf_viewer::Send send = check_answer;
   // A started session without lines: the default display (4000 fur strokes, 45 ms a field at
   // -O1 with ASan) would make the fuzzer 20 times slower; inputs ask for lines themselves.
   session.handle_text("{\"type\":\"hello\"}", send);

@@ -6,7 +6,7 @@
 // input it found is kept in test/fuzz/corpus/<target>/.
 
 #include "coefficient_file.h"
-#include "editor_messages.h"
+#include "messages.h"
 #include "mesh_input.h"
 #include "scratch_path.h"
 #include "tool.h"
@@ -22,6 +22,7 @@
 #include <string>
 
 using namespace tvf_tool;
+using namespace tvf_viewer;
 
 namespace {
 
