@@ -365,26 +365,45 @@ double cotangent_at(const Point_3& a, const Point_3& b, const Point_3& c)
 
 typedef std::vector<Eigen::Triplet<double>> Triplets;
 
-// The P1 stiffness of one triangle's corners (i, j, k): off-diagonal -cot/2 of the third corner.
-void add_cotan_stiffness(const std::array<int, 3>& idx, const std::array<Point_3, 3>& p, double scale, Triplets& t)
+// Assembles a stiffness and a lumped mass over the faces: corner k of a face stands for the
+// unknown `unknown(corners, k)` (-1: none, the row and column are dropped), whose basis
+// function's gradient is `scale` times that of corner k's hat function.  So the stiffness
+// between two corners is `scale^2` times the P1 one, -cot/2 of the third corner; each unknown
+// gets a third of the area of its faces as mass.
+template <class Unknown>
+Sparse_eigenproblem assemble(const Mesh& mesh, int n, double scale, const Unknown& unknown)
 {
-  for(int k = 0; k < 3; ++k)
+  Sparse_eigenproblem p;
+  p.d = Eigen::VectorXd::Zero(n);
+  Triplets t;
+  for(Face_index f : mesh.faces())
   {
-    const int i = (k + 1) % 3, j = (k + 2) % 3;
-    const double w = 0.5 * scale * cotangent_at(p[i], p[j], p[k]);
-    t.emplace_back(idx[i], idx[j], -w);
-    t.emplace_back(idx[j], idx[i], -w);
-    t.emplace_back(idx[i], idx[i], w);
-    t.emplace_back(idx[j], idx[j], w);
+    std::array<Vertex_index, 3> v;
+    int k = 0;
+    for(Vertex_index x : vertices_around_face(mesh.halfedge(f), mesh)) v[k++] = x;
+    std::array<Point_3, 3> q;
+    std::array<int, 3> idx;
+    for(k = 0; k < 3; ++k) q[k] = mesh.point(v[k]), idx[k] = unknown(v, k);
+    const double area = 0.5 * std::sqrt(CGAL::cross_product(q[1] - q[0], q[2] - q[0]).squared_length());
+    for(k = 0; k < 3; ++k)
+    {
+      if(idx[k] >= 0) p.d[idx[k]] += area / 3;
+      // The pair (i, j) facing corner k; a dropped unknown takes its entries with it, but its
+      // partner keeps its diagonal (a function that vanishes there, not a missing face).
+      const int i = (k + 1) % 3, j = (k + 2) % 3;
+      const double w = 0.5 * scale * scale * cotangent_at(q[i], q[j], q[k]);
+      if(idx[i] >= 0) t.emplace_back(idx[i], idx[i], w);
+      if(idx[j] >= 0) t.emplace_back(idx[j], idx[j], w);
+      if(idx[i] >= 0 && idx[j] >= 0)
+      {
+        t.emplace_back(idx[i], idx[j], -w);
+        t.emplace_back(idx[j], idx[i], -w);
+      }
+    }
   }
-}
-
-double face_area(const Mesh& mesh, Face_index f, std::array<Vertex_index, 3>& v)
-{
-  int k = 0;
-  for(Vertex_index x : vertices_around_face(mesh.halfedge(f), mesh)) v[k++] = x;
-  return 0.5 * std::sqrt(CGAL::cross_product(mesh.point(v[1]) - mesh.point(v[0]),
-                                             mesh.point(v[2]) - mesh.point(v[0])).squared_length());
+  p.A.resize(n, n);
+  p.A.setFromTriplets(t.begin(), t.end());
+  return p;
 }
 
 } // namespace
@@ -392,25 +411,7 @@ double face_area(const Mesh& mesh, Face_index f, std::array<Vertex_index, 3>& v)
 Sparse_eigenproblem cotan_vertex_problem(const Mesh& mesh)
 {
   const int n = int(mesh.number_of_vertices());
-  Sparse_eigenproblem p;
-  p.d = Eigen::VectorXd::Zero(n);
-  Triplets t;
-  for(Face_index f : mesh.faces())
-  {
-    std::array<Vertex_index, 3> v;
-    const double area = face_area(mesh, f, v);
-    std::array<int, 3> idx;
-    std::array<Point_3, 3> pts;
-    for(int k = 0; k < 3; ++k)
-    {
-      idx[k] = int(v[k]);
-      pts[k] = mesh.point(v[k]);
-      p.d[idx[k]] += area / 3;
-    }
-    add_cotan_stiffness(idx, pts, 1.0, t);
-  }
-  p.A.resize(n, n);
-  p.A.setFromTriplets(t.begin(), t.end());
+  Sparse_eigenproblem p = assemble(mesh, n, 1.0, [](const std::array<Vertex_index, 3>& v, int k) { return int(v[k]); });
   p.kernel = Eigen::MatrixXd::Ones(n, 1);
   return p;
 }
@@ -422,30 +423,11 @@ Sparse_eigenproblem crouzeix_raviart_edge_problem(const Mesh& mesh)
   int n = 0;
   for(Edge_index e : mesh.edges())
     if(!mesh.is_border(e)) interior[std::size_t(e)] = n++;
-  Sparse_eigenproblem p;
-  p.d = Eigen::VectorXd::Zero(n);
-  Triplets all;
-  for(Face_index f : mesh.faces())
-  {
-    std::array<Vertex_index, 3> v;
-    const double area = face_area(mesh, f, v);
-    std::array<int, 3> idx;
-    std::array<Point_3, 3> pts;
-    for(int k = 0; k < 3; ++k)
-    {
-      // The edge opposite corner k joins the other two corners.
-      const auto h = mesh.halfedge(v[(k + 1) % 3], v[(k + 2) % 3]);
-      idx[k] = interior[std::size_t(mesh.edge(h))];
-      pts[k] = mesh.point(v[k]);
-      if(idx[k] >= 0) p.d[idx[k]] += area / 3;
-    }
-    Triplets t;
-    add_cotan_stiffness(idx, pts, 4.0, t);
-    for(const auto& x : t)
-      if(x.row() >= 0 && x.col() >= 0) all.push_back(x);
-  }
-  p.A.resize(n, n);
-  p.A.setFromTriplets(all.begin(), all.end());
+  // The edge opposite corner k joins the other two corners; its function 1 - 2 lambda_k has
+  // -2 times the gradient of corner k's hat function.
+  Sparse_eigenproblem p = assemble(mesh, n, 2.0, [&](const std::array<Vertex_index, 3>& v, int k) {
+    return interior[std::size_t(mesh.edge(mesh.halfedge(v[(k + 1) % 3], v[(k + 2) % 3])))];
+  });
   const bool closed = n == int(mesh.number_of_edges());
   p.kernel = closed ? Eigen::MatrixXd::Ones(n, 1) : Eigen::MatrixXd(n, 0);
   return p;
