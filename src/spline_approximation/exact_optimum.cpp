@@ -101,8 +101,11 @@ public:
   // Paths whose squared error (and knot cost) so far already exceed `bound` cannot win: the
   // rest only adds.  The bound is a known solution's objective, or the bound mode's budget.
   double bound = std::numeric_limits<double>::infinity();
-  // Lists beyond this many quadratics: the problem is declared not computable.
-  std::size_t cap = 20000;
+  // Beyond this many pairwise tests (a few seconds) the problem is declared not computable:
+  // the pairwise test makes a list's cost quadratic in its length, and on smooth data with
+  // many candidates the lists grow long.
+  mutable std::size_t work = 0;
+  std::size_t work_limit = std::size_t(1) << 30;
 
 private:
 
@@ -129,9 +132,10 @@ private:
     Q.a.resize(w); Q.c.resize(w); Q.from_node.resize(w); Q.from_index.resize(w); Q.b.resize(w * std::size_t(D_));
     Q.a.push_back(a); Q.c.push_back(c); Q.from_node.push_back(node); Q.from_index.push_back(index);
     Q.b.insert(Q.b.end(), b.data(), b.data() + D_);
-    if(Q.size() > cap)
+    work += Q.size();
+    if(work > work_limit)
       throw Invalid_input("spline fit: the dynamic programming optimum is not computable here (more than " +
-                          std::to_string(cap) + " candidate paths at one knot); use fewer candidate knots");
+                          std::to_string(work_limit) + " path comparisons); use fewer candidate knots");
   }
 
   const Problem& p_;

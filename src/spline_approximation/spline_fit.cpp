@@ -61,7 +61,8 @@ Spline_fit penalty_decomposition_within(const internal::Problem& p, const intern
       hi = mid;
     }
   }
-  return best;
+  // The same removal pass as in penalty mode, now while the bound holds.
+  return internal::greedy_removal(p, goal, &best.kept);
 }
 
 } // namespace
