@@ -1,0 +1,215 @@
+// Copyright (c) 2026 The Spline_approximation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Benchmark of Spline_approximation (issue 37): error against run time and against knot
+// count per algorithm, on generated noisy planar curves.
+//   1. cubic within an RMS bound: penalty decomposition, greedy removal, and least squares on
+//      uniform knots (the fewest uniform knots reaching the same RMS error);
+//   2. degree 1 within a max error: knots + 2 vertices against Douglas-Peucker at the same
+//      max error (DP's error is the distance to the polyline, ours the distance at the sample's
+//      parameter, which is never smaller: the comparison favours Douglas-Peucker);
+//   3. the gap to the exact optimum where it is known: degree 1 by dynamic programming on a
+//      grid of candidates, every degree by brute force on 14 candidates;
+//   4. error against knot count along a sweep of lambda.
+//
+// Usage: bench_spline_approximation [--sizes 1000,10000,...] [--rms 0.002] [--max-error 0.005]
+//                                   [--noise 0.0005] [--sweep-size 2000]
+
+#include <CGAL/Spline_approximation/Spline_fit.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace SA = CGAL::Spline_approximation;
+
+namespace {
+
+// A noisy rose-like planar curve (the fit_curve example's), n samples.
+Eigen::MatrixXd curve(Eigen::Index n, double noise, unsigned seed = 1)
+{
+  std::mt19937 gen(seed);
+  std::normal_distribution<double> g(0.0, noise);
+  Eigen::MatrixXd P(n, 2);
+  for(Eigen::Index j = 0; j < n; ++j) {
+    const double s = 3.0 * double(j) / double(n - 1), r = std::cos(2 * s) + 0.2 * s;
+    P(j, 0) = r * std::cos(s) + g(gen);
+    P(j, 1) = r * std::sin(s) + g(gen);
+  }
+  return P;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point t0)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+SA::Fit_options options(int k, SA::Fit_algorithm a)
+{
+  SA::Fit_options o;
+  o.degree = k;
+  o.algorithm = a;
+  return o;
+}
+
+// Douglas-Peucker: the vertices kept for a max distance eps to the simplified polyline.
+std::size_t douglas_peucker(const Eigen::MatrixXd& P, double eps)
+{
+  std::vector<char> keep(std::size_t(P.rows()), 0);
+  keep.front() = keep.back() = 1;
+  std::vector<std::pair<Eigen::Index, Eigen::Index>> stack = {{0, P.rows() - 1}};
+  while(!stack.empty()) {
+    const auto [a, b] = stack.back();
+    stack.pop_back();
+    const Eigen::RowVectorXd d = P.row(b) - P.row(a);
+    const double L2 = d.squaredNorm();
+    double worst = -1;
+    Eigen::Index at = -1;
+    for(Eigen::Index j = a + 1; j < b; ++j) {
+      const Eigen::RowVectorXd v = P.row(j) - P.row(a);
+      const double s = L2 > 0 ? std::clamp(v.dot(d) / L2, 0.0, 1.0) : 0.0;
+      const double dist = (v - s * d).norm();
+      if(dist > worst) { worst = dist; at = j; }
+    }
+    if(worst > eps) {
+      keep[std::size_t(at)] = 1;
+      stack.push_back({a, at});
+      stack.push_back({at, b});
+    }
+  }
+  std::size_t count = 0;
+  for(char c : keep) count += std::size_t(c);
+  return count;
+}
+
+// The fewest uniform knots whose least-squares cubic reaches the RMS bound (doubling, then
+// bisection; the error is nearly monotone in the knot count).
+std::pair<std::size_t, double> uniform_knots_for(const Eigen::MatrixXd& P, const Eigen::VectorXd& t, double rms)
+{
+  auto rms_of = [&](std::size_t g) {
+    return SA::least_squares_spline(P, t, 3, Eigen::VectorXd::LinSpaced(Eigen::Index(g + 2), 0, 1).segment(1, Eigen::Index(g)))
+        .rms_error;
+  };
+  std::size_t hi = 1;
+  while(rms_of(hi) > rms && hi < std::size_t(P.rows()) / 2) hi *= 2;
+  std::size_t lo = hi / 2;
+  while(hi - lo > 1) {
+    const std::size_t mid = (lo + hi) / 2;
+    (rms_of(mid) <= rms ? hi : lo) = mid;
+  }
+  return {hi, rms_of(hi)};
+}
+
+std::vector<Eigen::Index> parse_sizes(const std::string& s)
+{
+  std::vector<Eigen::Index> out;
+  std::stringstream in(s);
+  std::string item;
+  while(std::getline(in, item, ',')) out.push_back(Eigen::Index(std::atoll(item.c_str())));
+  return out;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  std::vector<Eigen::Index> sizes = {1000, 10000, 100000, 1000000};
+  double rms = 0.002, max_error = 0.005, noise = 0.0005;
+  Eigen::Index sweep_size = 2000;
+  for(int i = 1; i + 1 < argc; i += 2) {
+    const std::string a = argv[i], v = argv[i + 1];
+    if(a == "--sizes") sizes = parse_sizes(v);
+    else if(a == "--rms") rms = std::atof(v.c_str());
+    else if(a == "--max-error") max_error = std::atof(v.c_str());
+    else if(a == "--noise") noise = std::atof(v.c_str());
+    else if(a == "--sweep-size") sweep_size = Eigen::Index(std::atoll(v.c_str()));
+    else { std::fprintf(stderr, "unknown option %s\n", a.c_str()); return 2; }
+  }
+  std::printf("curves: noisy rose, noise sigma %g per coordinate; candidates: every sample\n\n", noise);
+
+  std::printf("1. cubic within RMS %g: knots and time per algorithm, and least squares on uniform knots\n", rms);
+  std::printf("%9s | %-8s %7s %10s %10s %9s | %8s %10s %9s | %s\n", "samples", "algo", "knots", "rms", "max", "seconds",
+              "uniform", "rms", "seconds", "uniform/knots");
+  for(Eigen::Index n : sizes) {
+    const Eigen::MatrixXd P = curve(n, noise);
+    const Eigen::VectorXd t = SA::chord_length_parameters(P);
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto [g, g_rms] = uniform_knots_for(P, t, rms);
+    const double g_seconds = seconds_since(t0);
+    for(SA::Fit_algorithm a : {SA::Fit_algorithm::penalty_decomposition, SA::Fit_algorithm::greedy_removal}) {
+      SA::Fit_options o = options(3, a);
+      o.rms_error = rms;
+      const SA::Spline_fit f = SA::fit_spline(P, t, o);
+      std::printf("%9lld | %-8s %7zu %10.3e %10.3e %9.3f | %8zu %10.3e %9.3f | %.2fx\n", (long long)n,
+                  SA::algorithm_name(a), f.number_of_knots(), f.rms_error, f.max_error, f.seconds, g, g_rms, g_seconds,
+                  double(g) / double(std::max<std::size_t>(1, f.number_of_knots())));
+    }
+  }
+
+  std::printf("\n2. degree 1 within max error %g: vertices (knots + 2) against Douglas-Peucker\n", max_error);
+  std::printf("%9s | %-8s %9s %10s %9s | %9s %9s | %s\n", "samples", "algo", "vertices", "max", "seconds", "DP verts",
+              "seconds", "saving");
+  for(Eigen::Index n : sizes) {
+    const Eigen::MatrixXd P = curve(n, noise);
+    const auto t0 = std::chrono::steady_clock::now();
+    const std::size_t dp_vertices = douglas_peucker(P, max_error);
+    const double dp_seconds = seconds_since(t0);
+    for(SA::Fit_algorithm a : {SA::Fit_algorithm::penalty_decomposition, SA::Fit_algorithm::greedy_removal}) {
+      SA::Fit_options o = options(1, a);
+      o.max_error = max_error;
+      const SA::Spline_fit f = SA::fit_spline(P, o);
+      const std::size_t v = f.number_of_knots() + 2;
+      std::printf("%9lld | %-8s %9zu %10.3e %9.3f | %9zu %9.3f | %+.1f %%\n", (long long)n, SA::algorithm_name(a), v,
+                  f.max_error, f.seconds, dp_vertices, dp_seconds, 100.0 * (1.0 - double(v) / double(dp_vertices)));
+    }
+  }
+
+  std::printf("\n3. gap to the exact optimum (penalty mode, objective |AX-P|^2 + lambda #knots)\n");
+  std::printf("%-28s %8s | %-8s %7s %12s %9s %8s\n", "problem", "lambda", "algo", "knots", "objective", "seconds", "gap");
+  struct Exact_case { int degree; Eigen::Index samples; std::size_t grid; SA::Fit_algorithm exact; };
+  const Exact_case cases[] = {{1, 1000, 20, SA::Fit_algorithm::dynamic_programming},
+                              {1, 1000, 14, SA::Fit_algorithm::brute_force},
+                              {3, 1000, 14, SA::Fit_algorithm::brute_force}};
+  for(const Exact_case& c : cases) {
+    const Eigen::MatrixXd P = curve(c.samples, noise);
+    for(double lambda : {1e-3, 1e-2, 1e-1}) {
+      SA::Fit_options o = options(c.degree, c.exact);
+      o.penalty = lambda;
+      o.candidate_grid_size = c.grid;
+      SA::Spline_fit best;
+      try {
+        best = SA::fit_spline(P, o);
+      } catch(const SA::Invalid_input& e) {
+        std::printf("degree %d, %lld samples, %zu cand. %8g | not computable: %s\n", c.degree, (long long)c.samples,
+                    c.grid, lambda, e.what());
+        continue;
+      }
+      char problem[64];
+      std::snprintf(problem, sizeof problem, "degree %d, %lld samples, %zu cand.", c.degree, (long long)c.samples, c.grid);
+      for(SA::Fit_algorithm a : {c.exact, SA::Fit_algorithm::penalty_decomposition, SA::Fit_algorithm::greedy_removal}) {
+        o.algorithm = a;
+        const SA::Spline_fit f = a == c.exact ? best : SA::fit_spline(P, o);
+        std::printf("%-28s %8g | %-8s %7zu %12.6e %9.4f %+7.2f%%\n", problem, lambda, SA::algorithm_name(a),
+                    f.number_of_knots(), f.objective, f.seconds, 100.0 * (f.objective / best.objective - 1.0));
+      }
+    }
+  }
+
+  std::printf("\n4. error against knot count, cubic, %lld samples, lambda sweep\n", (long long)sweep_size);
+  std::printf("%10s | %-8s %7s %10s %10s %9s\n", "lambda", "algo", "knots", "rms", "max", "seconds");
+  const Eigen::MatrixXd S = curve(sweep_size, noise);
+  for(double lambda : {1e-1, 1e-2, 1e-3, 1e-4, 1e-5})
+    for(SA::Fit_algorithm a : {SA::Fit_algorithm::penalty_decomposition, SA::Fit_algorithm::greedy_removal}) {
+      SA::Fit_options o = options(3, a);
+      o.penalty = lambda;
+      const SA::Spline_fit f = SA::fit_spline(S, o);
+      std::printf("%10g | %-8s %7zu %10.3e %10.3e %9.3f\n", lambda, SA::algorithm_name(a), f.number_of_knots(),
+                  f.rms_error, f.max_error, f.seconds);
+    }
+  return 0;
+}

@@ -1,0 +1,98 @@
+// Copyright (c) 2026 The Spline_approximation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_SPLINE_APPROXIMATION_SPLINE_FIT_H
+#define CGAL_SPLINE_APPROXIMATION_SPLINE_FIT_H
+
+/// \file Spline_fit.h
+/// Spline approximation with the fewest knots (thesis Chapter 6, SPEC 14): samples `p_j` in
+/// R^D at parameters `t_j`, a dense set of candidate knots, and
+/// `min |A X - P|^2 + lambda * #{candidate knots kept}` (or the fewest knots within an error
+/// bound), solved by one of several algorithms; every answer is finished by the least-squares
+/// fit on the knots it keeps.  Samples are the rows of an Eigen matrix; <approximate_curve.h>
+/// is the front-end over ranges of CGAL points.
+
+#include <CGAL/Spline_approximation/B_spline.h>
+#include <CGAL/Spline_approximation/errors.h>
+
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+namespace CGAL {
+namespace Spline_approximation {
+
+/// The algorithms, each selectable.
+enum class Fit_algorithm {
+  penalty_decomposition, ///< SPEC 14: banded SPD solves alternated with a group hard threshold while beta grows
+  greedy_removal,        ///< baseline: remove the knots of smallest k-th derivative jump in batches, refit
+  dynamic_programming,   ///< exact optimum for degree 1 (ordered subsets of the candidates)
+  brute_force            ///< exact optimum over all subsets of at most `max_brute_force_candidates` candidates
+};
+
+/// The name of an algorithm, for tables ("penalty", "greedy", "dp", "brute").
+const char* algorithm_name(Fit_algorithm a);
+
+/// Up to 2^16 least-squares fits: seconds for small data, never more.
+constexpr std::size_t max_brute_force_candidates = 16;
+
+/// What to fit and how.  Exactly one of `penalty`, `max_error`, `rms_error` must be set.
+struct Fit_options
+{
+  int degree = 3;                   ///< 1 to 3
+  Fit_algorithm algorithm = Fit_algorithm::penalty_decomposition;
+  std::optional<double> penalty;    ///< lambda >= 0: the cost of one knot, in squared data units
+  std::optional<double> max_error;  ///< > 0: the fewest knots with every sample within this distance
+  std::optional<double> rms_error;  ///< > 0: the fewest knots with the root-mean-square distance within this
+  /// 0: every interior sample parameter is a candidate knot; g > 0: the uniform grid `i / (g + 1)`, i = 1..g.
+  std::size_t candidate_grid_size = 0;
+};
+
+/// A fitted spline with its errors.  The error of a sample is the Euclidean distance between
+/// it and the spline at the sample's parameter (not the closest point of the curve).
+struct Spline_fit
+{
+  B_spline spline;
+  Eigen::VectorXd parameters;     ///< the samples' parameters in [0, 1]
+  Eigen::VectorXd candidates;     ///< the candidate knots
+  std::vector<std::size_t> kept;  ///< indices into `candidates` of the knots kept, increasing
+  Eigen::VectorXd errors;         ///< per sample
+  double max_error = 0, rms_error = 0;
+  double squared_error = 0;       ///< sum over samples of the squared errors
+  double objective = 0;           ///< `squared_error + lambda * number_of_knots()` (penalty mode)
+  bool within_bound = true;       ///< bound modes: whether the bound was met (else the best fit found)
+  Fit_algorithm algorithm = Fit_algorithm::penalty_decomposition;
+  double seconds = 0;             ///< wall time of the fit
+
+  std::size_t number_of_knots() const { return kept.size(); }
+};
+
+/// Normalised chord-length parameters of the rows of `samples` (0 at the first, 1 at the last).
+/// \throws Invalid_input for fewer than two rows, a non-finite coordinate, or two consecutive equal rows.
+Eigen::VectorXd chord_length_parameters(const Eigen::MatrixXd& samples);
+
+/// Fits an open curve through the rows of `samples` at chord-length parameters.
+/// \throws Invalid_input for fewer than `degree + 1` samples, NaN or infinite coordinates,
+///         consecutive repeated samples (a zero-length piece), `lambda < 0`, a bound `<= 0`, not
+///         exactly one of penalty and bounds, a degree outside 1..3, or an exact algorithm asked
+///         where it is not computable (dynamic programming for degree > 1 or a max-error bound,
+///         brute force on more than `max_brute_force_candidates` candidates).
+Spline_fit fit_spline(const Eigen::MatrixXd& samples, const Fit_options& options);
+
+/// Same, at the caller's parameters (strictly increasing and finite; mapped affinely to [0, 1]).
+Spline_fit fit_spline(const Eigen::MatrixXd& samples, const Eigen::VectorXd& parameters,
+                      const Fit_options& options);
+
+/// The least-squares spline of `degree` on the given interior knots (strictly inside (0, 1),
+/// increasing) at the parameters `t` (in [0, 1]): the finish of every algorithm, and the
+/// uniform-knot baseline.  Where the knots leave the fit under-determined (an interval without
+/// enough samples), the fit with the smallest k-th derivative jumps among the best is returned.
+Spline_fit least_squares_spline(const Eigen::MatrixXd& samples, const Eigen::VectorXd& t, int degree,
+                                const Eigen::VectorXd& interior_knots);
+
+} // namespace Spline_approximation
+} // namespace CGAL
+
+#endif

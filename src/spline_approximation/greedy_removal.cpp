@@ -1,0 +1,66 @@
+// Copyright (c) 2026 The Spline_approximation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Greedy knot removal, the baseline (in the spirit of Lyche and Morken): start from every
+// candidate, rank the kept knots by the jump of the k-th derivative of the current fit (a knot
+// whose jump vanishes can go at no cost), remove a batch of the smallest, refit, and keep the
+// batch if the goal allows it (the objective falls, or the bound still holds); on refusal
+// halve the batch.  Batches keep it to O(log) refits on long curves.
+
+#include <CGAL/Spline_approximation/internal/spline_numerics.h>
+
+#include <algorithm>
+#include <numeric>
+
+namespace CGAL {
+namespace Spline_approximation {
+namespace internal {
+
+Spline_fit greedy_removal(const Problem& p, const Goal& goal, const std::vector<std::size_t>* start)
+{
+  std::vector<std::size_t> kept(static_cast<std::size_t>(p.candidates.size()));
+  std::iota(kept.begin(), kept.end(), std::size_t(0));
+  if(start) kept = *start;
+  Spline_fit fit = finish(p, kept, goal.lambda);
+  if(goal.is_bound() && !goal.met(fit)) return fit; // removing knots cannot help
+  std::size_t batch = std::max<std::size_t>(1, kept.size() / 8);
+  std::size_t tried_singles = 0; // at batch 1, the next few ranked knots are tried before giving up
+  while(!kept.empty()) {
+    const Band_rows J = jump_rows(fit.spline.knots, p.degree);
+    const Eigen::VectorXd jump = J.times(fit.spline.control_points).rowwise().norm();
+    std::vector<std::size_t> order(kept.size());
+    std::iota(order.begin(), order.end(), std::size_t(0));
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return jump[Eigen::Index(a)] < jump[Eigen::Index(b)]; });
+    // The batch: smallest jumps first, never two neighbours (their removals interact).
+    std::vector<char> out(kept.size(), 0), blocked(kept.size(), 0);
+    std::size_t chosen = 0;
+    for(std::size_t q = (batch == 1 ? tried_singles : 0); q < order.size() && chosen < batch; ++q) {
+      const std::size_t i = order[q];
+      if(blocked[i]) continue;
+      out[i] = 1;
+      ++chosen;
+      if(i > 0) blocked[i - 1] = 1;
+      if(i + 1 < kept.size()) blocked[i + 1] = 1;
+    }
+    if(chosen == 0) break;
+    std::vector<std::size_t> trial_kept;
+    for(std::size_t i = 0; i < kept.size(); ++i) if(!out[i]) trial_kept.push_back(kept[i]);
+    Spline_fit trial = finish(p, trial_kept, goal.lambda);
+    const bool accept = goal.is_bound() ? goal.met(trial) : trial.objective < fit.objective;
+    if(accept) {
+      kept = std::move(trial_kept);
+      fit = std::move(trial);
+      tried_singles = 0;
+      batch = std::max<std::size_t>(1, std::min(batch, kept.size() / 8));
+    } else if(batch > 1) {
+      batch /= 2;
+    } else if(++tried_singles >= std::min<std::size_t>(8, kept.size())) {
+      break;
+    }
+  }
+  return fit;
+}
+
+} // namespace internal
+} // namespace Spline_approximation
+} // namespace CGAL

@@ -1,0 +1,117 @@
+// Copyright (c) 2026 The Spline_approximation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The banded Cholesky and the least-squares finish every algorithm ends with.
+
+#include <CGAL/Spline_approximation/internal/spline_numerics.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace CGAL {
+namespace Spline_approximation {
+namespace internal {
+
+void Banded_spd::add_gram(const Band_rows& R, double w)
+{
+  const Eigen::Index c = R.values.cols();
+  for(Eigen::Index r = 0; r < R.rows(); ++r)
+    for(Eigen::Index a = 0; a < c; ++a)
+      for(Eigen::Index b = 0; b <= a; ++b) at(R.first[r] + a, R.first[r] + b) += w * R.values(r, a) * R.values(r, b);
+}
+
+Banded_spd Banded_spd::plus(const Banded_spd& B, double beta) const
+{
+  Banded_spd M(size(), std::max(w_, B.w_));
+  M.band_.leftCols(w_ + 1) = band_;
+  M.band_.leftCols(B.w_ + 1) += beta * B.band_;
+  return M;
+}
+
+bool Banded_spd::factor(double relative_pivot)
+{
+  const Eigen::Index n = size();
+  for(Eigen::Index j = 0; j < n; ++j) {
+    const Eigen::Index lo = std::max<Eigen::Index>(0, j - w_);
+    double d = at(j, j);
+    const double original = d;
+    for(Eigen::Index k = lo; k < j; ++k) d -= at(j, k) * at(j, k);
+    if(!(d > relative_pivot * original)) return false; // also catches NaN
+    const double l = std::sqrt(d);
+    at(j, j) = l;
+    for(Eigen::Index i = j + 1; i <= std::min(n - 1, j + w_); ++i) {
+      double v = at(i, j);
+      for(Eigen::Index k = std::max<Eigen::Index>(0, i - w_); k < j; ++k) v -= at(i, k) * at(j, k);
+      at(i, j) = v / l;
+    }
+  }
+  return true;
+}
+
+Eigen::MatrixXd Banded_spd::solve(const Eigen::MatrixXd& B) const
+{
+  const Eigen::Index n = size();
+  Eigen::MatrixXd X = B;
+  for(Eigen::Index i = 0; i < n; ++i) {
+    for(Eigen::Index k = std::max<Eigen::Index>(0, i - w_); k < i; ++k) X.row(i) -= at(i, k) * X.row(k);
+    X.row(i) /= at(i, i);
+  }
+  for(Eigen::Index i = n - 1; i >= 0; --i) {
+    for(Eigen::Index k = i + 1; k <= std::min(n - 1, i + w_); ++k) X.row(i) -= at(k, i) * X.row(k);
+    X.row(i) /= at(i, i);
+  }
+  return X;
+}
+
+Spline_fit finish(const Problem& p, const std::vector<std::size_t>& kept, double lambda)
+{
+  const Eigen::MatrixXd& P = *p.samples;
+  const int k = p.degree;
+  Eigen::VectorXd interior(kept.size());
+  for(std::size_t i = 0; i < kept.size(); ++i) interior[Eigen::Index(i)] = p.candidates[Eigen::Index(kept[i])];
+  const Eigen::VectorXd U = clamped_knots(interior, k);
+  const Band_rows A = design_rows(U, k, p.t);
+  const Eigen::Index n_ctrl = U.size() - k - 1;
+  Banded_spd AtA(n_ctrl, k + 1);
+  AtA.add_gram(A, 1.0);
+  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(n_ctrl, P.cols());
+  A.add_transpose_times(P, 1.0, rhs);
+  // A pivot below 1e-12 of its diagonal means the knots leave (nearly) a direction without
+  // samples (Schoenberg-Whitney fails): then add 1e-10 |J X|^2 at the kept knots, whose kernel
+  // (single polynomials) the samples do determine, so the minimiser is unique and keeps its
+  // residual within about 1e-10 of the best one.
+  Banded_spd M = AtA;
+  if(!M.factor(1e-12)) {
+    Banded_spd JtJ(n_ctrl, k + 1);
+    JtJ.add_gram(jump_rows(U, k), 1.0);
+    M = AtA.plus(JtJ, 1e-10 * AtA.max_diagonal());
+    if(!M.factor(1e-15)) throw Numerical_failure("least-squares spline: the normal equations are singular");
+  }
+  Spline_fit fit;
+  fit.spline.degree = k;
+  fit.spline.knots = U;
+  fit.spline.control_points = M.solve(rhs);
+  fit.parameters = p.t;
+  fit.candidates = p.candidates;
+  fit.kept = kept;
+  fit.errors = (A.times(fit.spline.control_points) - P).rowwise().norm();
+  fit.squared_error = fit.errors.squaredNorm();
+  fit.max_error = fit.errors.size() ? fit.errors.maxCoeff() : 0.0;
+  fit.rms_error = std::sqrt(fit.squared_error / double(std::max<Eigen::Index>(1, fit.errors.size())));
+  fit.objective = fit.squared_error + lambda * double(kept.size());
+  return fit;
+}
+
+bool better(const Spline_fit& a, const Spline_fit& b, const Goal& goal)
+{
+  if(!goal.is_bound()) return a.objective < b.objective;
+  const bool ma = goal.met(a), mb = goal.met(b);
+  if(ma != mb) return ma;
+  if(!ma) return a.squared_error < b.squared_error;
+  if(a.kept.size() != b.kept.size()) return a.kept.size() < b.kept.size();
+  return a.squared_error < b.squared_error;
+}
+
+} // namespace internal
+} // namespace Spline_approximation
+} // namespace CGAL

@@ -1,0 +1,99 @@
+// Copyright (c) 2026 The Spline_approximation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The penalty decomposition of SPEC 14: with Y standing in for the jumps J X,
+//   min |A X - P|^2 + beta |J X - Y|^2 + lambda #{rows r: Y_r != 0},
+// alternating the X-step (a banded SPD solve of (A^T A + beta J^T J) X = A^T P + beta J^T Y)
+// and the Y-step (keep row r of J X iff beta |(J X)_r|^2 > lambda: a group hard threshold,
+// one group per knot over all D coordinates) while beta grows, until the kept rows settle;
+// then a removal pass over the kept knots.
+
+#include <CGAL/Spline_approximation/internal/spline_numerics.h>
+
+#include <algorithm>
+
+namespace CGAL {
+namespace Spline_approximation {
+namespace internal {
+
+Spline_fit penalty_decomposition(const Problem& p, double lambda)
+{
+  const Eigen::MatrixXd& P = *p.samples;
+  const int k = p.degree;
+  const Eigen::Index m = p.candidates.size();
+  std::vector<std::size_t> all(static_cast<std::size_t>(m));
+  for(std::size_t i = 0; i < all.size(); ++i) all[i] = i;
+  // Without a penalty keeping every knot is optimal: the squared error never grows with the knot set.
+  if(lambda == 0 || m == 0) return finish(p, all, lambda);
+
+  const Eigen::VectorXd U = clamped_knots(p.candidates, k);
+  const Band_rows A = design_rows(U, k, p.t), J = jump_rows(U, k);
+  const Eigen::Index n_ctrl = U.size() - k - 1;
+  Banded_spd AtA(n_ctrl, k + 1), JtJ(n_ctrl, k + 1);
+  AtA.add_gram(A, 1.0);
+  JtJ.add_gram(J, 1.0);
+  Eigen::MatrixXd AtP = Eigen::MatrixXd::Zero(n_ctrl, P.cols());
+  A.add_transpose_times(P, 1.0, AtP);
+  // Both beta ends are relative to A^T A (J's rows have unit norm): at 1e-6 the first solve
+  // is a barely smoothed least-squares fit (and definite even where the candidates outnumber
+  // the samples); at 1e10, J X is within 1e-10 of Y and no threshold decision can change.
+  const double scale = AtA.max_diagonal();
+  auto solve = [&](double beta, const Eigen::MatrixXd& Y) {
+    Banded_spd M = AtA.plus(JtJ, beta);
+    if(!M.factor(1e-15)) throw Numerical_failure("penalty decomposition: A^T A + beta J^T J is not positive definite");
+    Eigen::MatrixXd rhs = AtP;
+    J.add_transpose_times(Y, beta, rhs);
+    return std::make_pair(std::move(M), M.solve(rhs));
+  };
+  Eigen::MatrixXd Y = Eigen::MatrixXd::Zero(m, P.cols());
+  double beta = 1e-6 * scale;
+  Eigen::MatrixXd X = solve(beta, Y).second;
+  Eigen::VectorXd z2 = J.times(X).rowwise().squaredNorm();
+  const double z2_max = z2.maxCoeff();
+  if(!(z2_max > 0)) return finish(p, {}, lambda); // the data is one polynomial piece
+  // Start where the threshold lambda / beta equals the largest jump: nothing kept yet.
+  beta = std::max(beta, lambda / z2_max);
+  std::vector<char> kept(static_cast<std::size_t>(m), 0);
+  int settled = 0;
+  for(; beta <= 1e10 * scale; beta *= 2) {
+    Banded_spd M = AtA.plus(JtJ, beta);
+    if(!M.factor(1e-15)) throw Numerical_failure("penalty decomposition: A^T A + beta J^T J is not positive definite");
+    bool changed = false;
+    for(int inner = 0; inner < 4; ++inner) { // a few alternations per beta; usually one settles it
+      Eigen::MatrixXd rhs = AtP;
+      J.add_transpose_times(Y, beta, rhs);
+      X = M.solve(rhs);
+      const Eigen::MatrixXd Z = J.times(X);
+      z2 = Z.rowwise().squaredNorm();
+      bool step_changed = false;
+      for(Eigen::Index r = 0; r < m; ++r) {
+        const char keep = beta * z2[r] > lambda;
+        if(keep != kept[std::size_t(r)]) step_changed = true;
+        kept[std::size_t(r)] = keep;
+        if(keep) Y.row(r) = Z.row(r);
+        else Y.row(r).setZero();
+      }
+      changed = changed || step_changed;
+      if(!step_changed) break;
+    }
+    settled = changed ? 0 : settled + 1;
+    // Settled: the same knots for three betas, and every dropped jump far below the threshold
+    // (it only shrinks as beta grows, while the threshold falls as 1 / beta).
+    double dropped = 0;
+    for(Eigen::Index r = 0; r < m; ++r) if(!kept[std::size_t(r)]) dropped = std::max(dropped, z2[r]);
+    if(settled >= 3 && beta * dropped < 1e-4 * lambda) break;
+  }
+  std::vector<std::size_t> out;
+  for(Eigen::Index r = 0; r < m; ++r) if(kept[std::size_t(r)]) out.push_back(std::size_t(r));
+  // Polish: a knot kept while beta was small stays kept (its row of Y follows J X, so nothing
+  // pushes its jump down); on exact data whole clusters around a true knot survive.  Removing,
+  // from the least-squares fit on the kept knots, those that do not pay for themselves (the
+  // greedy pass, started here) fixes it; it only ever lowers the objective.
+  Goal goal;
+  goal.lambda = lambda;
+  return greedy_removal(p, goal, &out);
+}
+
+} // namespace internal
+} // namespace Spline_approximation
+} // namespace CGAL

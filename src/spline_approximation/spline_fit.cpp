@@ -1,0 +1,189 @@
+// Copyright (c) 2026 The Spline_approximation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The entry points: input checks, parameters, candidate knots, and the choice of algorithm.
+
+#include <CGAL/Spline_approximation/Spline_fit.h>
+#include <CGAL/Spline_approximation/internal/spline_numerics.h>
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+#include <string>
+
+namespace CGAL {
+namespace Spline_approximation {
+namespace {
+
+void check_samples(const Eigen::MatrixXd& samples, int degree)
+{
+  if(degree < 1 || degree > 3)
+    throw Invalid_input("spline fit: the degree must be 1, 2 or 3, not " + std::to_string(degree));
+  if(samples.cols() < 1) throw Invalid_input("spline fit: the samples have no coordinates");
+  if(samples.rows() < degree + 1)
+    throw Invalid_input("spline fit: degree " + std::to_string(degree) + " needs at least " +
+                        std::to_string(degree + 1) + " samples, got " + std::to_string(samples.rows()));
+  for(Eigen::Index j = 0; j < samples.rows(); ++j)
+    if(!samples.row(j).allFinite())
+      throw Invalid_input("spline fit: sample " + std::to_string(j) + " has a NaN or infinite coordinate");
+}
+
+void check_goal(const Fit_options& o)
+{
+  const int set = int(bool(o.penalty)) + int(bool(o.max_error)) + int(bool(o.rms_error));
+  if(set != 1)
+    throw Invalid_input("spline fit: give exactly one of a knot penalty, a max error bound and an RMS error bound");
+  if(o.penalty && !(*o.penalty >= 0 && std::isfinite(*o.penalty)))
+    throw Invalid_input("spline fit: the knot penalty lambda must be finite and >= 0");
+  for(const std::optional<double>& b : {o.max_error, o.rms_error})
+    if(b && !(*b > 0 && std::isfinite(*b)))
+      throw Invalid_input("spline fit: an error bound (tolerance) must be finite and > 0");
+}
+
+// Finds the fewest knots within a bound by the penalty decomposition: geometric bisection on
+// lambda between 0 (every knot) and the squared error of one polynomial piece (beyond which
+// no knot pays for itself), keeping the best fit that meets the bound.
+Spline_fit penalty_decomposition_within(const internal::Problem& p, const internal::Goal& goal)
+{
+  Spline_fit best = internal::finish(p, {}, 0);
+  if(goal.met(best)) return best;
+  double hi = best.squared_error, lo = 1e-12 * hi;
+  Spline_fit at_lo = internal::penalty_decomposition(p, lo);
+  if(!goal.met(at_lo)) return internal::better(at_lo, best, goal) ? at_lo : best;
+  best = at_lo;
+  while(hi > 1.05 * lo) { // about ten fits: the knot count rarely changes within 5 % of lambda
+    const double mid = std::sqrt(lo * hi);
+    Spline_fit fit = internal::penalty_decomposition(p, mid);
+    if(goal.met(fit)) {
+      lo = mid;
+      if(internal::better(fit, best, goal)) best = std::move(fit);
+    } else {
+      hi = mid;
+    }
+  }
+  // The same removal pass as in penalty mode, now while the bound holds.
+  return internal::greedy_removal(p, goal, &best.kept);
+}
+
+} // namespace
+
+const char* algorithm_name(Fit_algorithm a)
+{
+  switch(a) {
+  case Fit_algorithm::penalty_decomposition: return "penalty";
+  case Fit_algorithm::greedy_removal: return "greedy";
+  case Fit_algorithm::dynamic_programming: return "dp";
+  case Fit_algorithm::brute_force: return "brute";
+  }
+  return "?";
+}
+
+Eigen::VectorXd chord_length_parameters(const Eigen::MatrixXd& samples)
+{
+  if(samples.rows() < 2) throw Invalid_input("chord-length parameters: need at least two samples");
+  Eigen::VectorXd t(samples.rows());
+  t[0] = 0;
+  for(Eigen::Index j = 1; j < samples.rows(); ++j) {
+    if(!samples.row(j).allFinite() || !samples.row(j - 1).allFinite())
+      throw Invalid_input("chord-length parameters: sample " + std::to_string(samples.row(j).allFinite() ? j - 1 : j) +
+                          " has a NaN or infinite coordinate");
+    const double d = (samples.row(j) - samples.row(j - 1)).norm();
+    if(!(d > 0))
+      throw Invalid_input("chord-length parameters: samples " + std::to_string(j - 1) + " and " + std::to_string(j) +
+                          " coincide (a zero-length piece of the curve)");
+    t[j] = t[j - 1] + d;
+  }
+  return t / t[t.size() - 1];
+}
+
+Spline_fit fit_spline(const Eigen::MatrixXd& samples, const Fit_options& options)
+{
+  check_samples(samples, options.degree);
+  return fit_spline(samples, chord_length_parameters(samples), options);
+}
+
+Spline_fit fit_spline(const Eigen::MatrixXd& samples, const Eigen::VectorXd& parameters, const Fit_options& options)
+{
+  const auto start = std::chrono::steady_clock::now();
+  check_samples(samples, options.degree);
+  check_goal(options);
+  const Eigen::Index n = samples.rows();
+  if(parameters.size() != n)
+    throw Invalid_input("spline fit: " + std::to_string(parameters.size()) + " parameters for " + std::to_string(n) +
+                        " samples");
+  for(Eigen::Index j = 0; j < n; ++j) {
+    if(!std::isfinite(parameters[j])) throw Invalid_input("spline fit: parameter " + std::to_string(j) + " is not finite");
+    if(j > 0 && !(parameters[j] > parameters[j - 1]))
+      throw Invalid_input("spline fit: the parameters must increase strictly (parameters " + std::to_string(j - 1) +
+                          " and " + std::to_string(j) + ")");
+  }
+  internal::Problem p;
+  p.samples = &samples;
+  p.degree = options.degree;
+  p.t = (parameters.array() - parameters[0]) / (parameters[n - 1] - parameters[0]);
+  p.t[n - 1] = 1; // exactly, whatever the rounding of the division
+  const std::size_t g = options.candidate_grid_size;
+  if(g > 0) {
+    p.candidates.resize(Eigen::Index(g));
+    for(std::size_t i = 0; i < g; ++i) p.candidates[Eigen::Index(i)] = double(i + 1) / double(g + 1);
+  } else {
+    p.candidates = p.t.segment(1, n - 2);
+  }
+  internal::Goal goal;
+  goal.lambda = options.penalty.value_or(0.0);
+  goal.max_error = options.max_error;
+  goal.rms_error = options.rms_error;
+
+  Spline_fit fit;
+  switch(options.algorithm) {
+  case Fit_algorithm::penalty_decomposition:
+    fit = goal.is_bound() ? penalty_decomposition_within(p, goal) : internal::penalty_decomposition(p, goal.lambda);
+    break;
+  case Fit_algorithm::greedy_removal:
+    fit = internal::greedy_removal(p, goal);
+    break;
+  case Fit_algorithm::dynamic_programming:
+    if(options.degree != 1)
+      throw Invalid_input("spline fit: the dynamic programming optimum is known for degree 1 only");
+    if(goal.max_error)
+      throw Invalid_input("spline fit: the dynamic programming optimum is known for a penalty or an RMS bound, "
+                          "not a max error bound (use brute force on small problems)");
+    fit = internal::dynamic_programming(p, goal);
+    break;
+  case Fit_algorithm::brute_force:
+    if(std::size_t(p.candidates.size()) > max_brute_force_candidates)
+      throw Invalid_input("spline fit: brute force over " + std::to_string(p.candidates.size()) +
+                          " candidate knots is not computable (at most " +
+                          std::to_string(max_brute_force_candidates) + ")");
+    fit = internal::brute_force(p, goal);
+    break;
+  }
+  fit.algorithm = options.algorithm;
+  fit.within_bound = goal.met(fit);
+  fit.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return fit;
+}
+
+Spline_fit least_squares_spline(const Eigen::MatrixXd& samples, const Eigen::VectorXd& t, int degree,
+                                const Eigen::VectorXd& interior_knots)
+{
+  check_samples(samples, degree);
+  if(t.size() != samples.rows()) throw Invalid_input("least-squares spline: one parameter per sample is needed");
+  for(Eigen::Index j = 0; j < t.size(); ++j)
+    if(!(t[j] >= 0 && t[j] <= 1) || (j > 0 && !(t[j] > t[j - 1])))
+      throw Invalid_input("least-squares spline: the parameters must increase strictly within [0, 1]");
+  for(Eigen::Index i = 0; i < interior_knots.size(); ++i)
+    if(!(interior_knots[i] > 0 && interior_knots[i] < 1) || (i > 0 && !(interior_knots[i] > interior_knots[i - 1])))
+      throw Invalid_input("least-squares spline: the interior knots must increase strictly within (0, 1)");
+  internal::Problem p;
+  p.samples = &samples;
+  p.t = t;
+  p.degree = degree;
+  p.candidates = interior_knots;
+  std::vector<std::size_t> all(std::size_t(interior_knots.size()));
+  for(std::size_t i = 0; i < all.size(); ++i) all[i] = i;
+  return internal::finish(p, all, 0);
+}
+
+} // namespace Spline_approximation
+} // namespace CGAL
