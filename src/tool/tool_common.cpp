@@ -328,7 +328,9 @@ Arguments with_basis_size_alias(const Arguments& args)
   for(std::string& a : out)
   {
     if(a == "--") break; // what follows is positional
-    if(a.size() >= 2 && a[0] == '-' && a[1] == 'n') a[1] = 'k'; // "-n 300" and "-n300"; not "--n"
+    // "-n 300" and "-n300"; not "--n", nor a value such as "-nan" or a file "-notes.tvf"
+    if(a.size() >= 2 && a[0] == '-' && a[1] == 'n' && (a.size() == 2 || std::isdigit(static_cast<unsigned char>(a[2]))))
+      a[1] = 'k';
   }
   return out;
 }
