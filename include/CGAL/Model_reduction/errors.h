@@ -75,6 +75,14 @@ public:
   using std::runtime_error::runtime_error;
 };
 
+/// Thrown when the caller's progress callback asks a long computation to stop; what was
+/// computed is discarded.
+class Cancelled : public std::runtime_error
+{
+public:
+  using std::runtime_error::runtime_error;
+};
+
 } // namespace Model_reduction
 } // namespace CGAL
 

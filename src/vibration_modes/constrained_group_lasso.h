@@ -1,0 +1,71 @@
+// Copyright (c) 2026 The Vibration_modes authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_VIBRATION_MODES_SRC_CONSTRAINED_GROUP_LASSO_H
+#define CGAL_VIBRATION_MODES_SRC_CONSTRAINED_GROUP_LASSO_H
+
+// The convex problem of one ICCM step (SPEC 13.3):
+//   min u^T H u + mu sum_v m_v |u_v|   subject to   F^T M u = 0,  c^T M u = 1,
+// F the fixed directions (kernel and earlier modes, M-orthonormal), c the current unit
+// iterate.  ADMM on u = z with the penalty (rho / 2) |u - z + w|_M^2:
+// - u-step: the KKT system of (2H + rho M) u = rho M (z - w) under the constraints, by
+//   one sparse solve and a small Schur complement (A^-1 M F is kept per rho);
+// - z-step: a group soft threshold at mu / rho per vertex (the masses cancel);
+// - w += u - z.
+// rho adapts to balance the primal and dual residuals, refactoring 2H + rho M.
+
+#include <CGAL/Model_reduction/Sparse_spd_solver.h>
+#include <CGAL/Vibration_modes/Mode_problem.h>
+
+#include <Eigen/Dense>
+
+namespace CGAL {
+namespace Vibration_modes {
+namespace internal {
+
+class Constrained_group_lasso
+{
+public:
+  Constrained_group_lasso(const Mode_problem& problem, double mu, double tolerance);
+
+  /// The fixed directions, M-orthonormal.
+  void set_fixed(const Eigen::MatrixXd& Q);
+  /// One more fixed direction, M-unit and M-orthogonal to the others.
+  void add_fixed(const Eigen::VectorXd& v);
+  Eigen::VectorXd project_out_fixed(const Eigen::VectorXd& v) const;
+  double m_norm(const Eigen::VectorXd& v) const;
+
+  /// A new mode: u = z = c, w = 0, and rho near `eigenvalue` (refactors only if rho changes
+  /// by more than a factor 4).
+  void start(const Eigen::VectorXd& c, double eigenvalue);
+  /// ADMM on the plane c^T M u = 1 from the current state until both residuals are below
+  /// `tolerance` (relative; at least the constructor's) or `max_iterations`; returns the
+  /// iterations made.  `converged()` says whether the residuals met the tolerance.
+  int solve_on_plane(const Eigen::VectorXd& c, int max_iterations, double tolerance);
+  bool converged() const { return converged_; }
+  /// The last u-step: feasible (on the plane, M-orthogonal to the fixed directions).
+  const Eigen::VectorXd& u() const { return u_; }
+  /// Scales the state (u, z, w) for the next plane after the iterate is normalised.
+  void rescale(double s);
+  /// The sparse iterate z made exactly feasible without leaving its support (the smallest
+  /// M-norm change that restores M-orthogonality to the fixed directions), M-normalised;
+  /// empty if z is zero.
+  Eigen::VectorXd feasible_sparse_iterate() const;
+
+private:
+  void factor(double rho);
+
+  const Mode_problem& p_;
+  double mu_, tolerance_, rho_ = 0, energy_scale_ = 1;
+  Model_reduction::Sparse_spd_solver A_;
+  Eigen::MatrixXd F_, MF_, WF_; // fixed directions, M F, A^-1 M F
+  Eigen::VectorXd u_, z_, w_;
+  int refactorisations_ = 0;
+  bool converged_ = false;
+};
+
+} // namespace internal
+} // namespace Vibration_modes
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,235 @@
+// Copyright (c) 2026 The Vibration_modes authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+// Compressed modes against independent truth (SPEC 13, "Truth for tests"): mu = 0 gives the
+// eigenvectors' space, the ICCM objective never increases, every mode is feasible, the
+// support shrinks as mu grows, modes rotate with the shell, and the scalar problem of a
+// Laplacian (group size 1) works as the vector one.
+
+#include "shell_test_meshes.h"
+
+#include <CGAL/Vibration_modes/compressed_modes.h>
+#include <CGAL/Vibration_modes/errors.h>
+#include <CGAL/Vibration_modes/lowest_vibration_modes.h>
+
+#include <Eigen/Eigenvalues>
+#include <gtest/gtest.h>
+
+using namespace shell_test;
+namespace VM = CGAL::Vibration_modes;
+
+namespace {
+
+Mesh lumpy_sphere(int levels = 2)
+{
+  Mesh mesh = make_icosphere(levels);
+  jitter_vertices(mesh, 0.15, 21);
+  return mesh;
+}
+
+VM::Mode_problem shell_problem(const Mesh& mesh)
+{
+  return VM::shell_mode_problem(DS::Shell_energy(DS::stacked_positions(mesh), triangles_of(mesh), {1, 1, 0.01}));
+}
+
+double largest_angle_sine(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B, const Eigen::VectorXd& m)
+{
+  const Eigen::MatrixXd MA = m.asDiagonal() * A;
+  const Eigen::MatrixXd P = A * (A.transpose() * MA).inverse() * MA.transpose(); // M-projector onto span A
+  const Eigen::MatrixXd residual = B - P * B;                                   // B assumed M-orthonormal
+  return std::sqrt(std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(
+                                         residual.transpose() * m.asDiagonal() * residual)
+                                         .eigenvalues()
+                                         .maxCoeff()));
+}
+
+// A sparsity weight on the scale of the problem: the k-th eigenvalue over the l1 norm of a
+// unit vector spread evenly (sqrt of the total mass per group).
+double typical_mu(const VM::Mode_problem& p, const VM::Modes& ordinary, int k)
+{
+  const double total_mass = p.mass.sum() / p.group_size;
+  return ordinary.energies[k - 1] / std::sqrt(total_mass);
+}
+
+} // namespace
+
+TEST(CompressedModes, WithoutSparsityTheySpanTheLowestEigenvectors)
+{
+  const VM::Mode_problem p = shell_problem(lumpy_sphere());
+  // k modes ending at a gap of the spectrum (so that their space is well defined).
+  const VM::Modes ordinary = VM::lowest_vibration_modes(p, 16);
+  int k = 4;
+  while(ordinary.energies[k] < 1.05 * ordinary.energies[k - 1]) ++k;
+  ASSERT_LT(k, 16);
+  VM::Compressed_mode_options options;
+  options.sparsity_weight = 0;
+  const VM::Modes modes = VM::compressed_modes(p, k, options);
+  EXPECT_LT(largest_angle_sine(modes.vectors, ordinary.vectors.leftCols(k), p.mass), 1e-6);
+  for(int i = 0; i < k; ++i) EXPECT_NEAR(modes.objectives[i], ordinary.energies[i], 1e-8 * ordinary.energies[i]);
+}
+
+TEST(CompressedModes, FeasibleMonotoneAndSparserAsMuGrows)
+{
+  const VM::Mode_problem p = shell_problem(lumpy_sphere(1));
+  const int k = 4;
+  const VM::Modes ordinary = VM::lowest_vibration_modes(p, k);
+  const double mu0 = typical_mu(p, ordinary, k);
+  double previous_support = 1.0;
+  for(double scale : {1.0, 8.0, 64.0})
+  {
+    SCOPED_TRACE("mu = " + std::to_string(scale) + " mu0");
+    VM::Compressed_mode_options options;
+    options.sparsity_weight = scale * mu0;
+    options.admm_tolerance = 1e-9; // near-exact convex steps: ICCM's monotonicity is then derived
+    options.exact_convex_steps = true;
+    options.max_inner_iterations = 5000;
+    std::vector<std::vector<double>> objectives(k);
+    options.progress = [&](const VM::Compressed_mode_progress& s) {
+      objectives[s.mode].push_back(s.objective);
+      return true;
+    };
+    const VM::Modes modes = VM::compressed_modes(p, k, options);
+    // Monotone: each ICCM step's objective at most the previous one (up to the inner tolerance).
+    for(int i = 0; i < k; ++i)
+      for(std::size_t j = 1; j < objectives[i].size(); ++j)
+        EXPECT_LE(objectives[i][j], objectives[i][j - 1] * (1 + 1e-7)) << "mode " << i << " step " << j;
+    // Feasible: M-orthonormal, M-orthogonal to the rigid motions.
+    const Eigen::MatrixXd G = modes.vectors.transpose() * p.mass.asDiagonal() * modes.vectors;
+    EXPECT_LT((G - Eigen::MatrixXd::Identity(k, k)).cwiseAbs().maxCoeff(), 1e-8);
+    EXPECT_LT((p.kernel.transpose() * p.mass.asDiagonal() * modes.vectors).cwiseAbs().maxCoeff(),
+              1e-8 * p.kernel.cwiseAbs().maxCoeff());
+    // The objective is the energy plus mu times the l1 norm, and the energy of the first mode
+    // is at least the first eigenvalue (it is a unit vector outside the kernel).
+    for(int i = 0; i < k; ++i)
+      EXPECT_NEAR(modes.objectives[i], modes.energies[i] + options.sparsity_weight * modes.l1_norms[i],
+                  1e-10 * modes.objectives[i]);
+    EXPECT_GE(modes.energies[0], ordinary.energies[0] * (1 - 1e-9));
+    // Sparser as mu grows (the first mode's support).
+    EXPECT_LE(modes.support_fractions[0], previous_support);
+    previous_support = modes.support_fractions[0];
+  }
+  EXPECT_LT(previous_support, 0.5); // at 64 mu0 the first mode is local
+}
+
+TEST(CompressedModes, SatisfyTheFirstOrderOptimalityConditions)
+{
+  // KKT of min u^T H u + mu sum m_v |u_v| on u^T M u = 1, F^T M u = 0 (F: rigid motions and
+  // the earlier modes), checked from the returned modes alone: multipliers sigma, nu with
+  //   on the support:  2 (H u)_v + mu m_v u_v / |u_v| - 2 sigma m_v u_v - m_v (F nu)_v = 0,
+  //   off it:          |2 (H u)_v - m_v (F nu)_v| <= mu m_v.
+  const VM::Mode_problem p = shell_problem(lumpy_sphere(1));
+  const VM::Modes ordinary = VM::lowest_vibration_modes(p, 3);
+  VM::Compressed_mode_options options;
+  options.sparsity_weight = 8 * typical_mu(p, ordinary, 3);
+  options.admm_tolerance = 1e-9;
+  const VM::Modes modes = VM::compressed_modes(p, 3, options);
+  const double mu = options.sparsity_weight;
+  for(int i = 0; i < 3; ++i)
+  {
+    const Eigen::VectorXd u = modes.vectors.col(i);
+    Eigen::MatrixXd F(u.size(), p.kernel.cols() + i);
+    F << p.kernel, modes.vectors.leftCols(i);
+    const Eigen::VectorXd Hu2 = 2 * (p.H * u);
+    // Rows of the support, in the M^-1 norm (divide by sqrt(m)): unknowns (sigma, nu).
+    std::vector<Eigen::Index> on;
+    for(Eigen::Index v = 0; v < u.size(); v += 3)
+      if(u.segment<3>(v).norm() > 0)
+        for(int c = 0; c < 3; ++c) on.push_back(v + c);
+    ASSERT_LT(on.size(), std::size_t(u.size())) << "mode " << i << " is not sparse";
+    Eigen::MatrixXd A(on.size(), 1 + F.cols());
+    Eigen::VectorXd b(on.size());
+    for(std::size_t r = 0; r < on.size(); ++r)
+    {
+      const Eigen::Index j = on[r], v = j - j % 3;
+      const double m = p.mass[j], w = 1 / std::sqrt(m);
+      A(r, 0) = w * 2 * m * u[j];
+      A.row(r).tail(F.cols()) = w * m * F.row(j);
+      b[r] = w * (Hu2[j] + mu * m * u[j] / u.segment<3>(v).norm());
+    }
+    const Eigen::VectorXd x = A.colPivHouseholderQr().solve(b);
+    // The ADMM's residuals (1e-9) and ICCM's step tolerance (1e-4) leave first-order
+    // conditions met to about 1e-4 of the gradient's size; a wrong threshold or a missing
+    // constraint leaves O(1).
+    EXPECT_LT((A * x - b).norm(), 1e-3 * b.norm()) << "mode " << i;
+    const Eigen::VectorXd Fnu = F * x.tail(F.cols());
+    for(Eigen::Index v = 0; v < u.size(); v += 3)
+      if(u.segment<3>(v).norm() == 0)
+      {
+        const double m = p.mass[v];
+        EXPECT_LE((Hu2.segment<3>(v) - m * Fnu.segment<3>(v)).norm(), mu * m * (1 + 1e-3)) << "mode " << i << " vertex " << v / 3;
+      }
+  }
+}
+
+TEST(CompressedModes, BeatTheOrdinaryModesOnTheirObjective)
+{
+  // The first compressed mode minimises the objective on the feasible set, which contains
+  // the first eigenvector: its objective is at most the eigenvector's.
+  const VM::Mode_problem p = shell_problem(lumpy_sphere());
+  const VM::Modes ordinary = VM::lowest_vibration_modes(p, 3);
+  VM::Compressed_mode_options options;
+  options.sparsity_weight = 2 * typical_mu(p, ordinary, 3);
+  const VM::Modes modes = VM::compressed_modes(p, 1, options);
+  EXPECT_LE(modes.objectives[0], VM::compressed_objective(p, ordinary.vectors.col(0), options.sparsity_weight));
+}
+
+TEST(CompressedModes, RotateWithTheShell)
+{
+  const Mesh mesh = lumpy_sphere(1);
+  const VM::Mode_problem p = shell_problem(mesh);
+  const VM::Modes ordinary = VM::lowest_vibration_modes(p, 2);
+  VM::Compressed_mode_options options;
+  options.sparsity_weight = 8 * typical_mu(p, ordinary, 2);
+  options.admm_tolerance = 1e-9;
+  const VM::Modes modes = VM::compressed_modes(p, 2, options);
+  Mesh turned_mesh = mesh;
+  const auto R = rotation_matrix(Vector_3(1, -1, 2), 1.1);
+  transform(turned_mesh, 1.0, R);
+  const VM::Mode_problem pr = shell_problem(turned_mesh);
+  const VM::Modes turned = VM::compressed_modes(pr, 2, options);
+  // The per-vertex l1 norm is rotation invariant: same objectives, and modes rotated.
+  const Eigen::Matrix3d Rm = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(R.data());
+  for(int i = 0; i < 2; ++i)
+  {
+    EXPECT_NEAR(turned.objectives[i], modes.objectives[i], 1e-5 * modes.objectives[i]) << "mode " << i;
+    const Eigen::VectorXd Ru = moved(modes.vectors.col(i), 1, Rm, Eigen::Vector3d::Zero());
+    EXPECT_NEAR(std::abs(Ru.dot(pr.mass.cwiseProduct(turned.vectors.col(i)))), 1.0, 1e-4) << "mode " << i;
+  }
+}
+
+TEST(CompressedModes, ScalarLaplacianProblem)
+{
+  // The scalar problem of compressed manifold modes: cotangent Laplacian, lumped mass,
+  // constants as kernel, one unknown per vertex.
+  const Mesh mesh = lumpy_sphere(3);
+  const Sparse_eigenproblem lap = cotan_vertex_problem(mesh);
+  VM::Mode_problem p;
+  p.H = lap.A;
+  p.mass = lap.d;
+  p.kernel = lap.kernel;
+  p.group_size = 1;
+  const VM::Modes ordinary = VM::lowest_vibration_modes(p, 6);
+  VM::Compressed_mode_options options;
+  options.sparsity_weight = 4 * typical_mu(p, ordinary, 6);
+  const VM::Modes modes = VM::compressed_modes(p, 6, options);
+  const Eigen::MatrixXd G = modes.vectors.transpose() * p.mass.asDiagonal() * modes.vectors;
+  EXPECT_LT((G - Eigen::MatrixXd::Identity(6, 6)).cwiseAbs().maxCoeff(), 1e-8);
+  for(int i = 0; i < 6; ++i)
+  {
+    EXPECT_LT(modes.support_fractions[i], 0.9) << "mode " << i;
+    EXPECT_GT(modes.support_fractions[i], 0.0) << "mode " << i;
+  }
+}
+
+TEST(CompressedModes, RefuseBadOptionsAndCancel)
+{
+  const VM::Mode_problem p = shell_problem(lumpy_sphere(1));
+  VM::Compressed_mode_options options;
+  options.sparsity_weight = -1;
+  try { VM::compressed_modes(p, 2, options); ADD_FAILURE(); }
+  catch(const VM::Invalid_input& e) { EXPECT_NE(std::string(e.what()).find("must be finite and >= 0"), std::string::npos); }
+  options.sparsity_weight = 1;
+  options.progress = [](const VM::Compressed_mode_progress& s) { return s.mode == 0; };
+  try { VM::compressed_modes(p, 3, options); ADD_FAILURE(); }
+  catch(const VM::Cancelled& e) { EXPECT_NE(std::string(e.what()).find("cancelled at mode 2 of 3"), std::string::npos); }
+}
