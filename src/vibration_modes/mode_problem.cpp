@@ -4,6 +4,8 @@
 #include <CGAL/Vibration_modes/Mode_problem.h>
 #include <CGAL/Vibration_modes/errors.h>
 
+#include "connected_components.h"
+
 #include <Eigen/Dense>
 
 #include <cmath>
@@ -49,11 +51,10 @@ Eigen::MatrixXd Mode_problem::expand(const Eigen::MatrixXd& free_vectors) const
   return full;
 }
 
-namespace {
+namespace internal {
 
-// Connected components of the triangles' vertices (-1 for a vertex in no triangle).
-std::vector<int> components(Eigen::Index n, const std::vector<Discrete_shells::Shell_energy::Triangle>& triangles,
-                            int& count)
+std::vector<int> connected_components(Eigen::Index n,
+                                      const std::vector<Discrete_shells::Shell_energy::Triangle>& triangles, int& count)
 {
   std::vector<int> parent(std::size_t(n), -1);
   auto find = [&](int v) {
@@ -84,14 +85,14 @@ std::vector<int> components(Eigen::Index n, const std::vector<Discrete_shells::S
   return label;
 }
 
-} // namespace
+} // namespace internal
 
 Eigen::MatrixXd rigid_motions(const Eigen::VectorXd& x, const std::vector<Discrete_shells::Shell_energy::Triangle>& triangles,
                               const std::vector<int>& pinned)
 {
   const Eigen::Index n = x.size() / 3;
   int count = 0;
-  const std::vector<int> label = components(n, triangles, count);
+  const std::vector<int> label = internal::connected_components(n, triangles, count);
   std::vector<std::vector<int>> members(count), pins(count);
   for(int v = 0; v < n; ++v)
     if(label[v] >= 0) members[label[v]].push_back(v);

@@ -20,18 +20,7 @@ namespace shell_test {
 namespace DS = CGAL::Discrete_shells;
 using namespace tvf_test;
 
-inline std::vector<DS::Shell_energy::Triangle> triangles_of(const Mesh& mesh)
-{
-  std::vector<DS::Shell_energy::Triangle> t;
-  for(auto f : faces(mesh))
-  {
-    DS::Shell_energy::Triangle tri;
-    int i = 0;
-    for(auto v : vertices_around_face(halfedge(f, mesh), mesh)) tri[i++] = int(v);
-    t.push_back(tri);
-  }
-  return t;
-}
+inline std::vector<DS::Shell_energy::Triangle> triangles_of(const Mesh& mesh) { return DS::mesh_triangles(mesh); }
 
 inline Eigen::VectorXd random_vector(Eigen::Index n, unsigned seed, double scale = 1)
 {

@@ -42,6 +42,45 @@ Eigen::VectorXd stacked_positions(const TriangleMesh& mesh, const NamedParameter
   return x;
 }
 
+/// The faces of `mesh` as vertex index triples (the vertex index map's indices).
+/// \throws Invalid_mesh naming the face for a face that is not a triangle.
+template <class TriangleMesh, class NamedParameters = parameters::Default_named_parameters>
+std::vector<Shell_energy::Triangle> mesh_triangles(const TriangleMesh& mesh,
+                                                   const NamedParameters& np = parameters::default_values())
+{
+  const auto vim = CGAL::get_initialized_vertex_index_map(mesh, np);
+  std::vector<Shell_energy::Triangle> triangles;
+  triangles.reserve(num_faces(mesh));
+  for(auto f : faces(mesh))
+  {
+    Shell_energy::Triangle t;
+    int k = 0;
+    for(auto v : vertices_around_face(halfedge(f, mesh), mesh))
+    {
+      if(k < 3) t[k] = int(get(vim, v));
+      ++k;
+    }
+    if(k != 3)
+      throw Invalid_mesh(Mesh_defect::non_triangle_face,
+                         "face " + std::to_string(triangles.size()) + " has " + std::to_string(k) + " vertices, not 3");
+    triangles.push_back(t);
+  }
+  return triangles;
+}
+
+/// The stiffnesses given as named parameters (defaults 1).
+template <class NamedParameters>
+Shell_stiffness shell_stiffness(const NamedParameters& np)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  Shell_stiffness k;
+  k.stretching = choose_parameter(get_parameter(np, internal_np::stretching_stiffness), 1.0);
+  k.area = choose_parameter(get_parameter(np, internal_np::area_stiffness), 1.0);
+  k.bending = choose_parameter(get_parameter(np, internal_np::bending_stiffness), 1.0);
+  return k;
+}
+
 /// The shell energy with `mesh` as its rest shape.
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{stretching_stiffness} `k_s >= 0`; `double`; default 1 \cgalParamNEnd
@@ -56,30 +95,7 @@ Eigen::VectorXd stacked_positions(const TriangleMesh& mesh, const NamedParameter
 template <class TriangleMesh, class NamedParameters = parameters::Default_named_parameters>
 Shell_energy make_shell_energy(const TriangleMesh& mesh, const NamedParameters& np = parameters::default_values())
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  Shell_stiffness k;
-  k.stretching = choose_parameter(get_parameter(np, internal_np::stretching_stiffness), 1.0);
-  k.area = choose_parameter(get_parameter(np, internal_np::area_stiffness), 1.0);
-  k.bending = choose_parameter(get_parameter(np, internal_np::bending_stiffness), 1.0);
-  const auto vim = CGAL::get_initialized_vertex_index_map(mesh, np);
-  std::vector<Shell_energy::Triangle> triangles;
-  triangles.reserve(num_faces(mesh));
-  for(auto f : faces(mesh))
-  {
-    Shell_energy::Triangle t;
-    int k_vertices = 0;
-    for(auto v : vertices_around_face(halfedge(f, mesh), mesh))
-    {
-      if(k_vertices < 3) t[k_vertices] = int(get(vim, v));
-      ++k_vertices;
-    }
-    if(k_vertices != 3)
-      throw Invalid_mesh(Mesh_defect::non_triangle_face, "face " + std::to_string(triangles.size()) + " has " +
-                                                             std::to_string(k_vertices) + " vertices, not 3");
-    triangles.push_back(t);
-  }
-  return Shell_energy(stacked_positions(mesh, np), triangles, k);
+  return Shell_energy(stacked_positions(mesh, np), mesh_triangles(mesh, np), shell_stiffness(np));
 }
 
 } // namespace Discrete_shells

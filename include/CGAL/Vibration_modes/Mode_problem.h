@@ -51,6 +51,16 @@ struct Mode_problem
 /// \throws Invalid_input for a pinned index outside the mesh.
 Mode_problem shell_mode_problem(const Discrete_shells::Shell_energy& energy, const std::vector<int>& pinned = {});
 
+/// The scalar problem of compressed manifold modes: the cotangent stiffness `K` (weight
+/// `(cot a + cot b) / 2` per edge, positive semi-definite), a third of the incident faces'
+/// area as mass, the constants of each connected component as kernel; one unknown per
+/// vertex (vertices in no triangle are left out, as pinned ones are).
+/// \throws Invalid_mesh as the shell energy does for bad triangles; Invalid_input for a
+///         pinned index outside the mesh.
+Mode_problem laplacian_mode_problem(const Eigen::VectorXd& positions,
+                                    const std::vector<Discrete_shells::Shell_energy::Triangle>& triangles,
+                                    const std::vector<int>& pinned = {});
+
 /// The rigid motions `t + omega x p` of each connected component of `triangles` on the
 /// stacked `positions`, that vanish at the `pinned` vertices: columns over all 3n unknowns.
 Eigen::MatrixXd rigid_motions(const Eigen::VectorXd& positions,
