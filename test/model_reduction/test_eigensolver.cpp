@@ -5,6 +5,7 @@
 // agreement with dense solves, residuals, orthonormality, and the inertia count
 // that proves no eigenvalue was skipped; several problems solved in one call.
 
+#include "expect_reason.h"
 #include "test_meshes.h"
 
 #include <CGAL/Model_reduction/Generalized_eigensolver.h>
@@ -519,9 +520,10 @@ TEST(Eigensolver, RefusesImpossibleRequests)
 {
   Mesh torus = make_torus(8, 5);
   const Sparse_eigenproblem p = cotan_vertex_problem(torus);
-  EXPECT_THROW(MR::lowest_eigenpairs(p.A, p.d, 40, p.kernel), MR::Invalid_input); // space has dimension 39
+  EXPECT_THROW_REASON(MR::lowest_eigenpairs(p.A, p.d, 40, p.kernel), MR::Invalid_input,
+                      "asked for 40 eigenpairs but the space has dimension 39");
   EXPECT_NO_THROW(MR::lowest_eigenpairs(p.A, p.d, 39, p.kernel));
-  EXPECT_THROW(MR::lowest_eigenpairs(p.A, p.d, -1, p.kernel), MR::Invalid_input);
+  EXPECT_THROW_REASON(MR::lowest_eigenpairs(p.A, p.d, -1, p.kernel), MR::Invalid_input, "asked for -1 eigenpairs");
 }
 
 TEST(Eigensolver, CompletenessCheckCatchesAMissingEigenvalue)

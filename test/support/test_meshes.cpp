@@ -206,6 +206,18 @@ std::string cgal_data_dir()
   return "";
 }
 
+std::string cgal_data_missing()
+{
+#ifdef TVF_CGAL_DATA_DIR
+  const std::string where = TVF_CGAL_DATA_DIR;
+#else
+  const std::string where = "(no TVF_CGAL_DATA_DIR)";
+#endif
+  return "SKIPPED: CGAL's data tree is not at " + where +
+         " (unpacked at configure time from /usr/share/doc/libcgal-dev/data.tar.gz; Debian: libcgal-dev, "
+         "or libcgal-demo in older releases). This test needs real meshes; CI refuses to configure without them.";
+}
+
 std::string shared_data_dir()
 {
 #ifdef TVF_SHARED_DATA_DIR

@@ -58,6 +58,8 @@ void jitter_vertices(Mesh& mesh, double amount, unsigned seed);
 
 /// CGAL's data tree (`meshes/...`) if unpacked, else empty.
 std::string cgal_data_dir();
+/// The reason to give in GTEST_SKIP when `cgal_data_dir()` is empty: where it was looked for and how to get it.
+std::string cgal_data_missing();
 /// `../shared/data` if present, else empty.
 std::string shared_data_dir();
 /// Reads a mesh; false if the file is absent or unreadable.

@@ -6,6 +6,7 @@
 // full, sources and vortices, harmonic parts, edits, scale invariance, and the
 // refusals of constraint sets that cannot be met.
 
+#include "expect_reason.h"
 #include "design_test_support.h"
 
 #include <CGAL/Tangent_vector_fields/Discrete_operators.h>
@@ -418,21 +419,26 @@ TEST(Spline, MalformedConstraintsAreInvalidInput)
   const TVF::Intrinsic_mesh& m = s.ops->mesh();
   TVF::Full_spline_solver full(s.hodge);
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  const std::vector<TVF::Field_constraint> bad = {
-      TVF::Field_constraint::vector_in_face(-1, {{1, 0, 0}}),
-      TVF::Field_constraint::vector_in_face(m.number_of_faces(), {{1, 0, 0}}),
-      TVF::Field_constraint::vector_in_face(0, {{nan, 0, 0}}),
-      TVF::Field_constraint::vector_in_face(0, m.normal(0)),           // normal to the face
-      TVF::Field_constraint::direction_in_face(0, {{0, 0, 0}}),        // no direction
-      TVF::Field_constraint::divergence_at_vertex(m.number_of_vertices(), 1),
-      TVF::Field_constraint::divergence_at_point(0, {{0.5, 0.6, 0.1}}, 1), // sum 1.2
-      TVF::Field_constraint::curl_at_point(0, {{-0.5, 1.0, 0.5}}, 1),      // negative
-      TVF::Field_constraint::curl_at_edge(m.number_of_edges(), 1),
-      TVF::Field_constraint::curl_at_edge(0, std::numeric_limits<double>::infinity())};
-  for(const auto& c : bad) EXPECT_THROW(full.add(c), TVF::Invalid_input) << c.describe();
+  // Each with the reason it must be refused for.
+  const std::vector<std::pair<TVF::Field_constraint, std::string>> bad = {
+      {TVF::Field_constraint::vector_in_face(-1, {{1, 0, 0}}), "face index -1 out of range"},
+      {TVF::Field_constraint::vector_in_face(m.number_of_faces(), {{1, 0, 0}}),
+       "face index " + std::to_string(m.number_of_faces()) + " out of range"},
+      {TVF::Field_constraint::vector_in_face(0, {{nan, 0, 0}}), "non-finite number"},
+      {TVF::Field_constraint::vector_in_face(0, m.normal(0)), "normal to its face"},
+      {TVF::Field_constraint::direction_in_face(0, {{0, 0, 0}}), "needs a non-zero direction"},
+      {TVF::Field_constraint::divergence_at_vertex(m.number_of_vertices(), 1),
+       "vertex index " + std::to_string(m.number_of_vertices()) + " out of range"},
+      {TVF::Field_constraint::divergence_at_point(0, {{0.5, 0.6, 0.1}}, 1), "barycentric coordinates must be non-negative and sum to 1"}, // sum 1.2
+      {TVF::Field_constraint::curl_at_point(0, {{-0.5, 1.0, 0.5}}, 1), "barycentric coordinates must be non-negative"}, // negative
+      {TVF::Field_constraint::curl_at_edge(m.number_of_edges(), 1),
+       "edge index " + std::to_string(m.number_of_edges()) + " out of range"},
+      {TVF::Field_constraint::curl_at_edge(0, std::numeric_limits<double>::infinity()), "non-finite number"}};
+  for(const auto& [c, reason] : bad) EXPECT_THROW_REASON(full.add(c), TVF::Invalid_input, reason);
   EXPECT_EQ(full.number_of_constraints(), 0);
   // Boundary alignment: only on boundary edges; the field is then parallel to the edge.
-  EXPECT_THROW(TVF::Field_constraint::boundary_alignment(m, m.interior_edges()[0]), TVF::Invalid_input);
+  EXPECT_THROW_REASON(TVF::Field_constraint::boundary_alignment(m, m.interior_edges()[0]), TVF::Invalid_input,
+                      "is not a boundary edge");
   int boundary_edge = -1;
   for(int e = 0; e < m.number_of_edges() && boundary_edge < 0; ++e)
     if(m.is_boundary_edge(e)) boundary_edge = e;

@@ -4,6 +4,7 @@
 // Field design (SPEC 7), continued: soft-constrained design (Fisher et al.) against the
 // hard spline, and the generic interface (property maps, named parameters, constraint files).
 
+#include "expect_reason.h"
 #include "design_test_support.h"
 
 #include <CGAL/Tangent_vector_fields/Discrete_operators.h>
@@ -336,5 +337,6 @@ TEST(DesignInterface, ConstraintFileRoundTripAndErrors)
       EXPECT_NE(std::string(e.what()).find(b.second), std::string::npos) << e.what();
     }
   }
-  EXPECT_THROW(TVF::read_constraint_file("/nonexistent/constraints.json", operators.matrices()), TVF::Invalid_input);
+  EXPECT_THROW_REASON(TVF::read_constraint_file("/nonexistent/constraints.json", operators.matrices()), TVF::Invalid_input,
+                      "cannot open constraint file /nonexistent/constraints.json");
 }

@@ -316,8 +316,10 @@ TEST(SmoothestNField, InvariantToScaleAndRigidMotion)
 
 TEST(SmoothestNField, AlignedFieldMinimisesItsEnergy)
 {
-  // E(z) = E_D(z) + s |z - g|^2_MX is minimal at the aligned field: no random direction
-  // lowers it, and a heavy weight reproduces the guide while a light one tends to be smooth.
+  // E(z) = E_D(z) + s |z - g|^2_MX is minimal at the aligned field.  Truth: its optimality
+  // condition (S + s MX) z = s MX g, assembled here from S and the masses and solved densely
+  // (E_D(x) = x^T S x is checked first, so that the condition is the right one).  A light
+  // weight tends to the smooth field, a heavy one reproduces the guide.
   Mesh mesh = make_curved_disk(6, 0.3);
   const auto nops = n_field_operators(mesh, 2);
   const int nf = nops->mesh().number_of_faces();
@@ -325,6 +327,22 @@ TEST(SmoothestNField, AlignedFieldMinimisesItsEnergy)
   for(int f = 0; f < nf; ++f) area += nops->mesh().face_area(f);
   TVF::Smoothest_n_field_options options;
   options.alignment = nops->from_vectors(random_vectors(nf, 17));
+  const Eigen::MatrixXd S = nops->S();
+  const Eigen::VectorXd& m = nops->masses();
+  const Eigen::VectorXd probe = random_field(nf, 3);
+  EXPECT_NEAR(nops->dirichlet_energy(probe), probe.dot(S * probe), 1e-12 * probe.dot(S * probe));
+  for(double weight : {3., 0.01, 300.})
+  {
+    options.alignment_weight = weight;
+    const Eigen::VectorXd z = TVF::smoothest_n_field(*nops, options);
+    const double s = weight / area;
+    const Eigen::MatrixXd system = S + s * Eigen::MatrixXd(m.asDiagonal());
+    const Eigen::VectorXd truth = system.ldlt().solve(Eigen::VectorXd(s * m.cwiseProduct(options.alignment)));
+    // The system's condition number (max eigenvalue of S over s, about 1e4 at the light weight)
+    // times rounding: 1e-9 leaves room for it, and a several-percent error fails by far.
+    EXPECT_LT(relative_difference(z, truth, m), 1e-9) << "weight " << weight;
+  }
+  // The energy at the truth is lower than at any nearby field (the condition is a minimum).
   options.alignment_weight = 3;
   const Eigen::VectorXd z = TVF::smoothest_n_field(*nops, options);
   const double s = options.alignment_weight / area;
