@@ -9,6 +9,7 @@
 
 #include <CGAL/Vibration_modes/errors.h>
 #include <CGAL/Vibration_modes/lowest_vibration_modes.h>
+#include <CGAL/Vibration_modes/vibration_modes.h>
 
 #include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
@@ -161,4 +162,24 @@ TEST(VibrationModes, RefuseBadProblemsWithTheReason)
   catch(const VM::Invalid_input& e) {
     EXPECT_NE(std::string(e.what()).find("pinned vertex 42 is outside the mesh (42 vertices)"), std::string::npos);
   }
+}
+
+TEST(VibrationModes, MeshFrontTakesNamedParametersAndFillsPropertyMaps)
+{
+  Mesh mesh = lumpy_sphere();
+  const std::vector<Vertex_index> pins = {Vertex_index(3), Vertex_index(40)};
+  // The shell's stiffnesses (Discrete_shells' tags) and the pins through one chain.
+  const VM::Modes modes = VM::vibration_modes(
+      mesh, 5, VM::parameters::bending_stiffness(0.02).area_stiffness(0.5).pinned_vertices(pins).random_seed(3));
+  const VM::Modes direct =
+      VM::lowest_vibration_modes(VM::shell_mode_problem(shell_of(mesh, {1, 0.5, 0.02}), {3, 40}), 5);
+  for(int i = 0; i < 5; ++i) EXPECT_NEAR(modes.energies[i], direct.energies[i], 1e-10 * direct.energies[i]);
+  EXPECT_EQ(modes.kernel_dimension, 1);
+  auto u = mesh.add_property_map<Vertex_index, Vector_3>("v:mode").first;
+  VM::copy_mode_to_vertex_map(mesh, modes, 2, u);
+  for(Vertex_index v : vertices(mesh))
+    for(int c = 0; c < 3; ++c) EXPECT_EQ(u[v][c], modes.vectors(3 * Eigen::Index(v) + c, 2));
+  EXPECT_EQ(u[Vertex_index(40)], Vector_3(0, 0, 0));
+  try { VM::copy_mode_to_vertex_map(mesh, modes, 5, u); ADD_FAILURE(); }
+  catch(const VM::Invalid_input& e) { EXPECT_NE(std::string(e.what()).find("mode 5 asked for, 5 computed"), std::string::npos); }
 }

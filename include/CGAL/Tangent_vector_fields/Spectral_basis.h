@@ -42,7 +42,7 @@ std::pair<Basis_request, Basis_options> basis_request(const NamedParameters& np)
     request = Basis_request::lowest(choose_parameter(get_parameter(np, internal_np::number_of_eigenfields), 100));
   Basis_options options;
   options.tolerance = choose_parameter(get_parameter(np, internal_np::eigensolver_tolerance), options.tolerance);
-  options.seed = choose_parameter(get_parameter(np, internal_np::random_seed), options.seed);
+  options.seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), options.seed);
   options.progress = choose_parameter(get_parameter(np, internal_np::progress_callback),
                                       std::function<void(const Spectral_progress&)>());
   return {request, options};

@@ -12,12 +12,19 @@
 // - `Named_function_parameters<T, Tag, Base>`: a CGAL parameter pack whose chaining
 //   functions are CGAL's, the shared ones and the package's, all returning this type;
 // - `parameters`: starters for all of them, `default_values()` and `combine()`.
+// A package built on another (Vibration_modes on Discrete_shells) also defines
+// CGAL_MR_BASE_PARAMETERS (the base's list) and CGAL_MR_BASE_NAMESPACE (the base's
+// namespace): its chain then carries the base's tags themselves, so that the base's
+// functions read them from it.
 //
 // CGAL 5.5 cannot add members to its own chain from outside; a subclass per package is
 // the way, and generating it here keeps the machinery written once.
 
 namespace internal_np {
 using namespace CGAL::Model_reduction::internal_np;
+#ifdef CGAL_MR_BASE_NAMESPACE
+using namespace CGAL_MR_BASE_NAMESPACE::internal_np;
+#endif
 #ifdef CGAL_MR_PACKAGE_PARAMETERS
 #define MR_add_named_parameter(X, Y, Z) enum X { Y };
 #include CGAL_MR_PACKAGE_PARAMETERS
@@ -49,6 +56,11 @@ struct Named_function_parameters : CGAL::Named_function_parameters<T, Tag, Base>
 #define MR_add_named_parameter(X, Y, Z) CGAL_MR_CHAIN_MEMBER(CGAL::Model_reduction::internal_np::X, Z)
 #include <CGAL/Model_reduction/internal/parameters_interface.h>
 #undef MR_add_named_parameter
+#ifdef CGAL_MR_BASE_PARAMETERS
+#define MR_add_named_parameter(X, Y, Z) CGAL_MR_CHAIN_MEMBER(CGAL_MR_BASE_NAMESPACE::internal_np::X, Z)
+#include CGAL_MR_BASE_PARAMETERS
+#undef MR_add_named_parameter
+#endif
 #ifdef CGAL_MR_PACKAGE_PARAMETERS
 #define MR_add_named_parameter(X, Y, Z) CGAL_MR_CHAIN_MEMBER(internal_np::X, Z)
 #include CGAL_MR_PACKAGE_PARAMETERS
@@ -82,6 +94,11 @@ inline Default_named_parameters default_values() { return Default_named_paramete
 #define MR_add_named_parameter(X, Y, Z) CGAL_MR_CHAIN_STARTER(CGAL::Model_reduction::internal_np::X, Z)
 #include <CGAL/Model_reduction/internal/parameters_interface.h>
 #undef MR_add_named_parameter
+#ifdef CGAL_MR_BASE_PARAMETERS
+#define MR_add_named_parameter(X, Y, Z) CGAL_MR_CHAIN_STARTER(CGAL_MR_BASE_NAMESPACE::internal_np::X, Z)
+#include CGAL_MR_BASE_PARAMETERS
+#undef MR_add_named_parameter
+#endif
 #ifdef CGAL_MR_PACKAGE_PARAMETERS
 #define MR_add_named_parameter(X, Y, Z) CGAL_MR_CHAIN_STARTER(internal_np::X, Z)
 #include CGAL_MR_PACKAGE_PARAMETERS

@@ -8,8 +8,7 @@
 // Polygon soup to mesh: for every face, the index of the polygon it comes from
 MR_add_named_parameter(face_to_polygon_map_t, face_to_polygon_map, face_to_polygon_map)
 
-// Randomised algorithms (start vectors, samples): the seed, so that runs repeat
-MR_add_named_parameter(random_seed_t, random_seed, random_seed)
+// (Randomised algorithms take CGAL's own `random_seed`: a second one would be ambiguous.)
 
 // Long computations: a callback with the progress, and the eigensolver's relative residual
 MR_add_named_parameter(progress_callback_t, progress_callback, progress_callback)
