@@ -6,6 +6,8 @@
 
 #include "connected_components.h"
 
+#include <Eigen/Geometry>
+
 #include <string>
 
 namespace CGAL {

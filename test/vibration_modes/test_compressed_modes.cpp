@@ -221,6 +221,38 @@ TEST(CompressedModes, ScalarLaplacianProblem)
   }
 }
 
+TEST(CompressedModes, WithTheKernelAllowedModesMayLeaveOrthogonality)
+{
+  // Compressed manifold modes' problem: the Laplacian's constants may take part in a mode.
+  // The first mode is then at most the constant's objective mu sqrt(area) and localised.
+  const Mesh mesh = lumpy_sphere(2);
+  const VM::Mode_problem p = VM::laplacian_mode_problem(DS::stacked_positions(mesh), triangles_of(mesh));
+  const VM::Modes ordinary = VM::lowest_vibration_modes(p, 3);
+  VM::Compressed_mode_options options;
+  options.orthogonal_to_kernel = false;
+  options.sparsity_weight = 4 * typical_mu(p, ordinary, 3);
+  const VM::Modes sparse = VM::compressed_modes(p, 2, options);
+  EXPECT_LE(sparse.objectives[0], options.sparsity_weight * std::sqrt(p.mass.sum()));
+  EXPECT_LT(sparse.support_fractions[0], 1.0);
+  EXPECT_GT(std::abs(p.kernel.col(0).dot(p.mass.cwiseProduct(sparse.vectors.col(0)))), 1e-3);
+}
+
+TEST(CompressedModes, LaplacianProblemMatchesTheReferenceAssembly)
+{
+  // The package's scalar problem against the test support's own cotangent assembly.
+  Mesh mesh = lumpy_sphere(2);
+  const Sparse_eigenproblem reference = cotan_vertex_problem(mesh);
+  const VM::Mode_problem p = VM::laplacian_mode_problem(DS::stacked_positions(mesh), triangles_of(mesh));
+  EXPECT_LT((Eigen::MatrixXd(p.H) - Eigen::MatrixXd(reference.A)).norm(), 1e-12 * reference.A.norm());
+  EXPECT_LT((p.mass - reference.d).norm(), 1e-14 * reference.d.norm());
+  EXPECT_EQ(p.kernel.cols(), 1);
+  // One pinned vertex removes its unknown and the constants.
+  const VM::Mode_problem pinned = VM::laplacian_mode_problem(DS::stacked_positions(mesh), triangles_of(mesh), {5});
+  EXPECT_EQ(pinned.H.rows(), p.H.rows() - 1);
+  EXPECT_EQ(pinned.kernel.cols(), 0);
+  EXPECT_EQ(VM::count_modes_below(pinned, VM::zero_mode_threshold(pinned)), 0);
+}
+
 TEST(CompressedModes, RefuseBadOptionsAndCancel)
 {
   const VM::Mode_problem p = shell_problem(lumpy_sphere(1));

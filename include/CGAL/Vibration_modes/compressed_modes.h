@@ -29,6 +29,13 @@ struct Compressed_mode_progress
   double objective = 0;      ///< at the current unit iterate
 };
 
+/// Where ICCM starts each mode (the problem is not convex: the start picks the local minimum).
+enum class Compressed_mode_start
+{
+  lowest_modes, ///< the i-th ordinary mode outside the kernel (with mu = 0, the answer itself)
+  random        ///< a random vector (seeded by `eigensolver.seed`): not rotation invariant
+};
+
 struct Compressed_mode_options
 {
   /// `mu >= 0`, in units of `H`'s eigenvalues per `|u|_{1,M}` (0: the ordinary modes).
@@ -48,6 +55,11 @@ struct Compressed_mode_options
   /// settles: the same modes with about 5x fewer ADMM iterations (4 modes of a 162-vertex
   /// shell at four sparsity weights: objectives equal to 5 digits).
   bool exact_convex_steps = false;
+  /// Modes M-orthogonal to the kernel (the rigid motions of a shell), as SPEC 13.3 asks.
+  /// False gives the problem of compressed manifold modes (Neumann et al.), where the
+  /// constants of a Laplacian may take part in a mode.
+  bool orthogonal_to_kernel = true;
+  Compressed_mode_start start = Compressed_mode_start::lowest_modes;
   /// The eigensolver giving the starting vectors (the ordinary modes).
   Model_reduction::Eigensolver_options eigensolver;
   /// Called after every ICCM iteration; return false to cancel (throws `Cancelled`).
