@@ -132,12 +132,20 @@ int shell(const std::string& path, int k, double mu_scale, double bending)
   t0 = std::chrono::steady_clock::now();
   const VM::Modes ordinary = VM::lowest_vibration_modes(p, k);
   const double t_ordinary = seconds_since(t0);
+  std::fprintf(stderr, "assembly %.1f s, %d ordinary modes %.1f s\n", t_assembly, k, t_ordinary);
   const double mu = mu_scale * ordinary.energies[k - 1]; // area 1: sqrt(area) = 1
   std::printf("shell %s: %ld vertices, k_b %g, mu %g (%g x lambda_%d), %d modes\n", path.c_str(),
               long(num_vertices(mesh)), bending, mu, mu_scale, k, k);
   t0 = std::chrono::steady_clock::now();
   VM::Compressed_mode_options o;
   o.sparsity_weight = mu;
+  int last_mode = -1;
+  o.progress = [&](const VM::Compressed_mode_progress& s) {
+    if(s.mode != last_mode)
+      std::fprintf(stderr, "mode %d of %d started at %.1f s\n", s.mode + 1, s.count, seconds_since(t0));
+    last_mode = s.mode;
+    return true;
+  };
   const VM::Modes modes = VM::compressed_modes(p, k, o);
   const double t_compressed = seconds_since(t0);
   print_modes(p, modes);

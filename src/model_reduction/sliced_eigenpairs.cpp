@@ -21,6 +21,7 @@
 
 #include <CGAL/Model_reduction/internal/Slicing_chain.h>
 #include <CGAL/Model_reduction/errors.h>
+#include <CGAL/Model_reduction/internal/One_blas_thread.h>
 
 #include <Eigen/Dense>
 
@@ -38,33 +39,11 @@
 #include <thread>
 #include <vector>
 
-// OpenBLAS's thread count, where OpenBLAS is the BLAS (weak: absent with another BLAS).
-extern "C" void openblas_set_num_threads(int) __attribute__((weak));
-extern "C" int openblas_get_num_threads(void) __attribute__((weak));
-
 namespace CGAL {
 namespace Model_reduction {
 namespace internal {
 
 namespace {
-
-// Sets OpenBLAS to one thread while the pool runs, and back afterwards.
-struct One_blas_thread
-{
-  int before = 0;
-  One_blas_thread()
-  {
-    if(openblas_get_num_threads && openblas_set_num_threads)
-    {
-      before = openblas_get_num_threads();
-      openblas_set_num_threads(1);
-    }
-  }
-  ~One_blas_thread()
-  {
-    if(before > 0) openblas_set_num_threads(before);
-  }
-};
 
 // Runs `tasks` on up to `threads` threads, each taking the next task in the list as it
 // comes free, and then what `more` gives it (none: the thread ends).  The caller's thread

@@ -5,6 +5,8 @@
 #include <CGAL/Vibration_modes/errors.h>
 #include <CGAL/Vibration_modes/lowest_vibration_modes.h>
 
+#include <CGAL/Model_reduction/internal/One_blas_thread.h>
+
 #include "constrained_group_lasso.h"
 
 #include <algorithm>
@@ -102,6 +104,10 @@ Modes compressed_modes(const Mode_problem& p, int count, const Compressed_mode_o
   // The ADMM's rho starts at the mode's eigenvalue: it balances 2H and rho M.
   auto eigenvalue = [&](int i) { return ordinary.energies[std::min<Eigen::Index>(i, known - 1)]; };
 
+  // Thousands of single-vector triangular solves: OpenBLAS's threads would spend the time
+  // waking and yielding (fertility as a shell, 3 modes: 21 % of the time in the kernel's
+  // scheduler).
+  Model_reduction::internal::One_blas_thread one_blas_thread;
   internal::Constrained_group_lasso admm(p, mu, options.admm_tolerance);
   if(options.orthogonal_to_kernel) admm.set_fixed(m_orthonormal(p.kernel, p.mass));
   Modes modes;

@@ -18,10 +18,12 @@ double zero_mode_threshold(const Mode_problem& p)
   for(int k = 0; k < p.H.outerSize(); ++k)
     for(Eigen::SparseMatrix<double>::InnerIterator it(p.H, k); it; ++it)
       row_sum[it.row()] += std::abs(it.value()) / std::sqrt(p.mass[it.row()] * p.mass[it.col()]);
-  // Rigid motions have eigenvalues of rounding size, about eps times the largest (1e-16);
-  // the lowest elastic mode of a fine, soft shell can be 1e-9 of it.  1e-11 separates the
-  // two with two orders of magnitude on either side.
-  return 1e-11 * row_sum.maxCoeff();
+  // Rigid motions have eigenvalues of rounding size, about eps (2e-16) times the largest.
+  // Gershgorin overestimates the largest where a mesh has tiny triangles (armadillo,
+  // 43k vertices, unit area, k_b 1e-3: bound 5.7e11, lowest elastic modes 1 to 5), so the
+  // threshold sits 1000x above rounding: 1e-13 of the bound.  A mode below it cannot be
+  // told from a rigid motion in double precision.
+  return 1e-13 * row_sum.maxCoeff();
 }
 
 int count_modes_below(const Mode_problem& p, double tau)
@@ -43,7 +45,8 @@ Modes lowest_vibration_modes(const Mode_problem& p, int count, const Model_reduc
     throw Invalid_input("vibration modes: the energy has " + std::to_string(zero) + " zero modes but " +
                         std::to_string(p.kernel.cols()) + " rigid motions" +
                         (zero > p.kernel.cols() ? std::string(": a mechanism moves without energy (a flat region without "
-                                                              "bending stiffness, or a hinge); add stiffness or pin it")
+                                                              "bending stiffness, or a hinge), or modes are too soft to "
+                                                              "tell from zero in double precision; add stiffness or pin it")
                                                 : std::string(": the given kernel is not in the null space of H")));
   const Model_reduction::Eigenpairs pairs = Model_reduction::lowest_eigenpairs(p.H, p.mass, count, p.kernel, options);
   Modes modes;

@@ -16,7 +16,7 @@ namespace Vibration_modes {
 
 /// The `count` lowest pairs of `H u = lambda M u` outside `problem.kernel`.
 /// Before solving, Sylvester's inertia of `H - tau M` must show exactly `kernel.cols()`
-/// eigenvalues below `tau = 1e-11 lambda_max` (Gershgorin bound of `M^-1/2 H M^-1/2`): a
+/// eigenvalues below `tau = 1e-13 lambda_max` (Gershgorin bound of `M^-1/2 H M^-1/2`): a
 /// larger count means the energy has a mechanism (a motion that costs nothing and is not
 /// rigid, e.g. a flat sheet without bending stiffness), whose modes would be meaningless.
 /// \throws Invalid_input for `count < 1`, more modes than unknowns outside the kernel, or
