@@ -17,6 +17,7 @@
 
 #include <CGAL/Discrete_shells/make_shell_energy.h>
 #include <CGAL/Vibration_modes/compressed_modes.h>
+#include <CGAL/Vibration_modes/errors.h>
 #include <CGAL/Vibration_modes/lowest_vibration_modes.h>
 #include <CGAL/Vibration_modes/named_function_parameters.h>
 
