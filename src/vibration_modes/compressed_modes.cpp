@@ -101,7 +101,7 @@ Modes compressed_modes(const Mode_problem& p, int count, const Compressed_mode_o
       for(Eigen::Index j = 0; j < start.rows(); ++j) start(j, i) = normal(rng);
     else
       start.col(i) = free_part(p, ordinary.vectors.col(i));
-  // The ADMM's rho starts at the mode's eigenvalue: it balances 2H and rho M.
+  // The ADMM's rho is set from the mode's eigenvalue (Constrained_group_lasso::start).
   auto eigenvalue = [&](int i) { return ordinary.energies[std::min<Eigen::Index>(i, known - 1)]; };
 
   // Thousands of single-vector triangular solves: OpenBLAS's threads would spend the time

@@ -35,8 +35,8 @@ public:
   Eigen::VectorXd project_out_fixed(const Eigen::VectorXd& v) const;
   double m_norm(const Eigen::VectorXd& v) const;
 
-  /// A new mode: u = z = c, w = 0, and rho near `eigenvalue` (refactors only if rho changes
-  /// by more than a factor 4).
+  /// A new mode: u = z = c, w = 0, and rho at 10x `eigenvalue` (refactors only if rho
+  /// changes by more than a factor 4).
   void start(const Eigen::VectorXd& c, double eigenvalue);
   /// ADMM on the plane c^T M u = 1 from the current state until both residuals are below
   /// `tolerance` (relative; at least the constructor's) or `max_iterations`; returns the
