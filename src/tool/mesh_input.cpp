@@ -18,6 +18,7 @@
 #include <array>
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -71,6 +72,60 @@ bool read_ply_face_properties(const std::string& path, std::vector<std::pair<std
     }
   }
   return true;
+}
+
+// The triangles of the `tristrips` elements of a PLY file (scans store their faces so): each
+// list of vertex indices holds strips separated by -1, and strip s0 s1 s2 s3 ... gives
+// (s0 s1 s2), (s2 s1 s3), (s2 s3 s4), ... (every other one turned, so that all keep the
+// strip's orientation); a triangle with a repeated vertex (where strips are stitched) is no
+// face.  Empty if the file has none; Tool_error for an index that is not a vertex.
+std::vector<std::vector<std::size_t>> read_ply_triangle_strips(const std::string& path, std::size_t vertices)
+{
+  namespace ply = CGAL::IO::internal;
+  std::vector<std::vector<std::size_t>> triangles;
+  std::ifstream in(path, std::ios::binary);
+  ply::PLY_reader reader(false);
+  if(!in || !reader.init(in)) return triangles;
+  std::vector<long long> strip;
+  auto end_strip = [&] {
+    for(std::size_t i = 0; i + 2 < strip.size(); ++i)
+    {
+      const long long a = strip[i + (i % 2)], b = strip[i + 1 - (i % 2)], c = strip[i + 2];
+      if(a != b && b != c && a != c)
+        triangles.push_back({std::size_t(a), std::size_t(b), std::size_t(c)});
+    }
+    strip.clear();
+  };
+  for(std::size_t i = 0; i < reader.number_of_elements(); ++i)
+  {
+    ply::PLY_element& element = reader.element(i);
+    const bool strips = element.name() == "tristrips";
+    for(std::size_t j = 0; j < element.number_of_items(); ++j)
+      for(std::size_t k = 0; k < element.number_of_properties(); ++k)
+      {
+        ply::PLY_read_number* p = element.property(k);
+        p->get(in);
+        if(in.fail()) throw Tool_error("cannot read a polygon mesh from '" + path + "' (malformed PLY triangle strips)");
+        if(!strips || (p->name() != "vertex_indices" && p->name() != "vertex_index")) continue;
+        std::vector<long long> indices;
+        if(auto* l = dynamic_cast<ply::PLY_read_typed_list<std::int32_t>*>(p))
+          indices.assign(l->buffer().begin(), l->buffer().end());
+        else if(auto* u = dynamic_cast<ply::PLY_read_typed_list<std::uint32_t>*>(p))
+          for(std::uint32_t x : u->buffer()) indices.push_back(x == 0xFFFFFFFFu ? -1 : (long long)x);
+        else
+          throw Tool_error("'" + path + "': the triangle strips' vertex indices must be int or uint lists");
+        for(long long x : indices)
+        {
+          if(x == -1) end_strip();
+          else if(x < 0 || x >= (long long)vertices)
+            throw Tool_error("'" + path + "': a triangle strip refers to vertex " + std::to_string(x) + " of " +
+                             std::to_string(vertices));
+          else strip.push_back(x);
+        }
+        end_strip();
+      }
+  }
+  return triangles;
 }
 
 // Bytes of a PLY scalar type, 0 for a name that is not one.
@@ -445,6 +500,7 @@ Mesh_file read_mesh_file(const std::string& path)
     {
       // The mesh is what counts: a PLY whose properties this parser cannot follow just has none.
       if(!read_ply_face_properties(path, file.face_properties)) file.face_properties.clear();
+      if(file.polygons.empty()) file.polygons = read_ply_triangle_strips(path, file.points.size());
     }
   }
   catch(const std::exception& e)

@@ -24,9 +24,11 @@ Command_line::Command_line(std::string usage, std::string description, bool read
   general.add_options()("help,h", "show this help and exit")("quiet,q", "print nothing but errors");
   if(reads_mesh)
     general.add_options()("mollify", "intrinsic mollification: make degenerate faces usable by adding a constant to "
-                                     "all edge lengths (Sharp and Crane 2020)")(
+                                     "all edge lengths (Sharp and Crane 2020); done with a warning when a mesh has "
+                                     "degenerate faces, unless --strict")(
         "strict", "refuse a mesh file that needs repair (polygons to triangulate, orientations to make consistent, "
-                  "non-manifold vertices or edges, degenerate or duplicate polygons) instead of repairing it");
+                  "non-manifold vertices or edges, degenerate or duplicate polygons) or mollification (degenerate "
+                  "faces) instead of repairing it");
 }
 
 po::options_description& Command_line::group(const std::string& title)

@@ -174,20 +174,38 @@ Tool_mesh::Tool_mesh(const std::string& path, bool mollify) : impl_(std::make_un
   impl_->path = path;
   load_mesh(path, strict_mesh_input(), impl_->mesh, impl_->repair, impl_->polygon_of_face);
   if(impl_->repair.changed()) warn("'" + path + "' repaired: " + impl_->repair.summary());
+  // The library's message names its C++ parameter where mollification would help.
+  const std::string parameter = "; use the named parameter use_intrinsic_mollification(true) to process it";
+  auto make = [this](bool m) {
+    impl_->operators = std::make_unique<TVF::Discrete_operators<Mesh>>(
+        impl_->mesh, TVF::parameters::use_intrinsic_mollification(m));
+  };
   try
   {
-    impl_->operators = std::make_unique<TVF::Discrete_operators<Mesh>>(
-        impl_->mesh, TVF::parameters::use_intrinsic_mollification(mollify));
+    make(mollify);
   }
   catch(const TVF::Invalid_mesh& e)
   {
-    // The library's message names its C++ parameter; the tool has an option for it.
     std::string reason = one_line(e.what());
-    const std::string parameter = "use the named parameter use_intrinsic_mollification(true)";
     const std::size_t at = reason.find(parameter);
-    if(at != std::string::npos) reason.replace(at, parameter.size(), mollify ? "mollification did not help" : "use --mollify");
-    else if(e.defect() == TVF::Mesh_defect::degenerate_face && !mollify) reason += " (try --mollify)";
-    throw Tool_error("'" + path + "': " + reason);
+    if(at == std::string::npos || mollify)
+    {
+      if(at != std::string::npos) reason.replace(at, parameter.size(), "; mollification did not help");
+      throw Tool_error("'" + path + "': " + reason);
+    }
+    reason.erase(at, parameter.size());
+    // Degenerate faces are mollified by default, as other defects are repaired: one warning.
+    if(strict_mesh_input())
+      throw Tool_error("'" + path + "': " + reason + "; --strict refuses to mollify it (--mollify asks for it)");
+    try
+    {
+      make(true);
+    }
+    catch(const TVF::Invalid_mesh& again)
+    {
+      throw Tool_error("'" + path + "': " + reason + "; mollification did not help: " + one_line(again.what()));
+    }
+    warn("'" + path + "': " + reason + ": mollified (intrinsic mollification, as with --mollify: --strict refuses)");
   }
   matrices_ = impl_->operators->shared_matrices();
 }

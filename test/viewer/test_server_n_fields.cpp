@@ -7,6 +7,7 @@
 // alone (not through the package's index); save and load round trips, the display of
 // n-fields, and hostile n-field messages.
 
+#include "full_spline_truth.h"
 #include "server_test_support.h"
 
 #include <gtest/gtest.h>
@@ -201,6 +202,75 @@ TEST_F(Server_test, n_field_session_meets_vectors_and_singularities)
   s.client.send("{\"type\":\"add\",\"constraint\":" + vector_constraint(f, t) + "}");
   s.client.expect("added");
   EXPECT_LT(distance(face_vector(s.client.expect("field"), f), t), 1e-5);
+}
+
+// The fields that follow an edit in exact mode, up to the exact one (which it returns).
+Message exact_field(Client& client)
+{
+  for(;;)
+  {
+    Message field = client.expect("field");
+    if(field.json.get<bool>("answer.exact", false)) return field;
+  }
+}
+
+TEST_F(Server_test, n_field_exact_answers_are_full_n_field_splines)
+{
+  // Exact mode with n = 4: every exact field is the one-shot full n-field spline of the same
+  // constraints (Full_n_field_spline_solver, solved here through the library): after a vector,
+  // an anchored singularity, a value edit, a move, a new omega and another order.
+  Session s(server->address());
+  ASSERT_EQ(library_sphere_triangles(), s.mesh.integers.at("triangles")); // numbered alike
+  s.client.send("{\"type\":\"set_n\",\"n\":4}");
+  s.client.expect("info");
+  s.client.expect("field");
+  s.client.send("{\"type\":\"set_solver\",\"solver\":\"full\"}");
+  EXPECT_EQ(exact_field(s.client).json.get<std::string>("solver"), "full");
+  const int f = 17, v = 40, anchor = face_at(s.mesh, v), w = 100, anchor_w = face_at(s.mesh, w);
+  const Vec a = scaled(tangent(s.mesh, f), 0.5), b = scaled(tangent(s.mesh, anchor), 0.5),
+            c = scaled(tangent(s.mesh, anchor_w), 2.0);
+  typedef TVF::N_field_constraint C;
+  const C vector = C::vector_in_face(f, a), at_v = C::singularity_at_vertex(v, 1, anchor, b);
+  // float32 on the wire: 6e-8 relative.
+  s.client.send("{\"type\":\"add\",\"constraint\":" + vector_constraint(f, a) + "}");
+  s.client.expect("added");
+  Message field = exact_field(s.client);
+  EXPECT_LT(largest_gap(field, full_n_field_spline(4, 2, {vector}, 0)), 1e-6);
+
+  s.client.send("{\"type\":\"add\",\"constraint\":" + singularity(v, 1, anchor, b) + "}");
+  const int id = s.client.expect("added").json.get<int>("id");
+  field = exact_field(s.client);
+  const Truth truth = full_n_field_spline(4, 2, {vector, at_v}, 0);
+  EXPECT_LT(largest_gap(field, truth), 1e-6);
+  if(field.json.count("difference")) // the reduced answer came first (unless the exact one was sooner)
+    EXPECT_GT(field.json.get<double>("difference"), 1e-3); // and was another field
+
+  // A value edit (the anchor's vector), then a move to another vertex with index -1/4.
+  s.client.send("{\"type\":\"change\",\"id\":" + std::to_string(id) + ",\"constraint\":" +
+                singularity(v, 1, anchor, scaled(b, -3)) + "}");
+  field = exact_field(s.client);
+  EXPECT_LT(largest_gap(field, full_n_field_spline(4, 2, {vector, C::singularity_at_vertex(v, 1, anchor, scaled(b, -3))}, 0)),
+            1e-6);
+  s.client.send("{\"type\":\"change\",\"id\":" + std::to_string(id) + ",\"constraint\":" +
+                singularity(w, -1, anchor_w, c) + "}");
+  field = exact_field(s.client);
+  const C at_w = C::singularity_at_vertex(w, -1, anchor_w, c);
+  EXPECT_LT(largest_gap(field, full_n_field_spline(4, 2, {vector, at_w}, 0)), 1e-6);
+
+  // Omega > 0, then the energy of order 1 (set_n starts a new design: constraints loaded again).
+  s.client.send("{\"type\":\"set_omega\",\"omega\":0.5}");
+  field = exact_field(s.client);
+  EXPECT_LT(largest_gap(field, full_n_field_spline(4, 2, {vector, at_w}, 0.5)), 1e-6);
+  s.client.send("{\"type\":\"save\"}");
+  const std::string file = object_member_text(s.client.expect("constraints").text, "file");
+  s.client.send("{\"type\":\"set_n\",\"n\":4,\"order\":1}");
+  EXPECT_EQ(s.client.expect("info").json.get<int>("order"), 1);
+  exact_field(s.client);
+  s.client.send("{\"type\":\"load\",\"file\":" + file + "}");
+  s.client.expect("loaded");
+  field = exact_field(s.client);
+  EXPECT_EQ(field.json.get<std::string>("solver"), "full");
+  EXPECT_LT(largest_gap(field, full_n_field_spline(4, 1, {vector, at_w}, 0.5)), 1e-6);
 }
 
 TEST_F(Server_test, hostile_n_field_messages_get_errors)

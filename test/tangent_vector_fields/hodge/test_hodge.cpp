@@ -168,7 +168,7 @@ namespace {
 void check_real_mesh(const std::string& file, int expected_dim, int expected_components = 1)
 {
   const std::string dir = cgal_data_dir();
-  if(dir.empty()) GTEST_SKIP() << "CGAL data tree not found (install libcgal-demo)";
+  if(dir.empty()) GTEST_SKIP() << cgal_data_missing();
   Mesh mesh;
   ASSERT_TRUE(read_mesh(dir + "/meshes/" + file, mesh)) << file;
   TVF::Hodge_decomposition<Mesh> hodge(mesh);
@@ -197,7 +197,7 @@ TEST(HodgeRealMeshes, ElephantWithHolesGenus3And106Loops) { check_real_mesh("ele
 TEST(HodgeRealMeshes, BonesPerComponent)
 {
   const std::string dir = cgal_data_dir();
-  if(dir.empty()) GTEST_SKIP() << "CGAL data tree not found";
+  if(dir.empty()) GTEST_SKIP() << cgal_data_missing();
   Mesh mesh;
   ASSERT_TRUE(read_mesh(dir + "/meshes/bones.off", mesh));
   TVF::Hodge_decomposition<Mesh> hodge(mesh);

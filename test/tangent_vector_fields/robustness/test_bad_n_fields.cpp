@@ -60,6 +60,20 @@ void expect_sound_n_field(Mesh& mesh, int n)
             static_cast<long long>(n) * euler_and_boundary_loops(mesh).first);
 }
 
+// The smoothest n-field of a connection with prescribed singularities has them where they are
+// prescribed: its indices are measured with the surface's own connection (not the one that
+// carries the prescription), so a prescription the field does not honour shows.  Poincare-Hopf
+// (indices summing to n chi) is the sanity line; it holds for any field.
+void expect_prescribed_found(const Mesh& mesh, int n, const std::vector<std::pair<int, int>>& prescribed)
+{
+  SCOPED_TRACE("n = " + std::to_string(n) + ", " + std::to_string(mesh.number_of_faces()) + " faces, prescribed");
+  const Eigen::VectorXd z = TVF::smoothest_n_field(*n_ops(mesh, n, prescribed));
+  ASSERT_TRUE(z.allFinite());
+  const std::vector<int> k = TVF::n_field_indices(*n_ops(mesh, n), z);
+  for(const auto& [v, index] : prescribed) EXPECT_EQ(k[v], index) << "vertex " << v;
+  EXPECT_EQ(index_sum(k), static_cast<long long>(n) * euler_and_boundary_loops(mesh).first);
+}
+
 } // namespace
 
 TEST(BadNFields, NOutOfRangeIsRefusedEverywhere)
@@ -98,6 +112,10 @@ TEST(BadNFields, AwkwardMeshesGiveUnitTangentFieldsWithTheRightIndexSum)
   for(Mesh* mesh : {&triangle, &band, &strip, &slab, &pair, &lonely})
     for(int n : {1, 2, 4})
       expect_sound_n_field(*mesh, n);
+  // Known singularities: a +1/n, -1/n pair on the torus with a lonely vertex (n chi = 0),
+  // and a +1/4 with a -1/4 beside it.
+  for(int n : {1, 2, 4}) expect_prescribed_found(lonely, n, {{0, 1}, {40, -1}});
+  expect_prescribed_found(lonely, 4, {{5, 1}, {6, -1}});
 }
 
 TEST(BadNFields, PrescribedSingularitiesThatCannotExistAreRefused)
@@ -131,6 +149,7 @@ TEST(BadNFields, SingularitiesNotSummingToChiAreCompletedElsewhere)
   const std::vector<int> k = TVF::n_field_indices(*ops, z);
   EXPECT_EQ(k[0], 1);
   EXPECT_EQ(index_sum(k), 8);
+  expect_prescribed_found(sphere, 4, {{0, 1}}); // the same, measured with the sphere's own connection
   // Every vertex of an icosahedron prescribed, summing to n chi: valid and met exactly.
   const Mesh ico = make_icosphere(0);
   std::vector<std::pair<int, int>> twelve;
@@ -139,6 +158,7 @@ TEST(BadNFields, SingularitiesNotSummingToChiAreCompletedElsewhere)
   const std::vector<int> k12 = TVF::n_field_indices(*all, TVF::smoothest_n_field(*all));
   EXPECT_EQ(index_sum(k12), 8);
   for(int v = 0; v < 12; ++v) EXPECT_EQ(k12[v], v < 8 ? 1 : 0) << v;
+  expect_prescribed_found(ico, 4, twelve);
 }
 
 TEST(BadNFields, BadFieldsAndGuidesAreRefused)

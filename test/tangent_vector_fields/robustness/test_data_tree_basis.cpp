@@ -76,7 +76,7 @@ void expect_complete(const Sparse_matrix& A, const Eigen::VectorXd& m, const Eig
 TEST(DataTree, BasisOfEveryProcessedMesh)
 {
   const std::string dir = cgal_data_dir();
-  if(dir.empty()) GTEST_SKIP() << "CGAL data tree not found (install libcgal-demo)";
+  if(dir.empty()) GTEST_SKIP() << cgal_data_missing();
   std::ifstream table(TVF_GOLDEN_TABLE);
   ASSERT_TRUE(table) << "cannot read " << TVF_GOLDEN_TABLE;
   int meshes = 0;
@@ -139,7 +139,7 @@ TEST(DataTree, BasisOfEveryProcessedMesh)
 TEST(DataTree, BasisOfManyWindowsOnNeedleTriangles)
 {
   const std::string dir = cgal_data_dir();
-  if(dir.empty()) GTEST_SKIP() << "CGAL data tree not found (install libcgal-demo)";
+  if(dir.empty()) GTEST_SKIP() << cgal_data_missing();
   Mesh mesh;
   ASSERT_TRUE(read_mesh(dir + "/meshes/camel.off", mesh));
   TVF::Discrete_operators<Mesh> operators(mesh);

@@ -5,6 +5,7 @@
 // solve of the Hodge-Laplacian, requests, filters, compression, storage, scale invariance.
 // The eigensolver behind it is tested in test_eigensolver.cpp.
 
+#include "expect_reason.h"
 #include "test_meshes.h"
 #include "scratch_path.h"
 
@@ -153,9 +154,12 @@ TEST(SpectralBasis, PerTypeAndBelowEigenvalueRequests)
   Basis below(torus, TVF::parameters::maximum_eigenvalue(bound));
   EXPECT_EQ(below.size(), 81);
   EXPECT_LE(below.eigenvalue(below.size() - 1), bound);
-  EXPECT_THROW(Basis(torus, TVF::parameters::number_of_eigenfields(2 * 288 + 1)), TVF::Invalid_input);
-  EXPECT_THROW(Basis(torus, TVF::parameters::number_of_exact_eigenfields(144)), TVF::Invalid_input); // 143 available
-  EXPECT_THROW(Basis(torus, TVF::parameters::maximum_eigenvalue(std::nan(""))), TVF::Invalid_input);
+  EXPECT_THROW_REASON(Basis(torus, TVF::parameters::number_of_eigenfields(2 * 288 + 1)),
+                      TVF::Invalid_input, "eigenfields but the space of fields has dimension 576");
+  EXPECT_THROW_REASON(Basis(torus, TVF::parameters::number_of_exact_eigenfields(144)),
+                      TVF::Invalid_input, "asked for 144 exact and 0 coexact eigenfields; the mesh has 143");
+  EXPECT_THROW_REASON(Basis(torus, TVF::parameters::maximum_eigenvalue(std::nan(""))),
+                      TVF::Invalid_input, "the largest eigenvalue of the basis must be finite and non-negative");
 }
 
 TEST(SpectralBasis, FiltersActPerType)
@@ -259,13 +263,19 @@ TEST(SpectralBasis, SaveAndLoadRoundTripAndRefuseOtherMeshes)
 
   // Other connectivity, other geometry, a scaled copy: refused.
   Mesh other = make_torus(16, 10);
-  EXPECT_THROW(Basis::load(other, path), TVF::Invalid_input);
+  EXPECT_THROW_REASON(Basis::load(other, path), TVF::Invalid_input, "it belongs to a mesh with other connectivity");
   Mesh moved = torus;
+  jitter_vertices(moved, 1e-6, 9);
+  EXPECT_THROW_REASON(Basis::load(moved, path), TVF::Invalid_input, "it belongs to a mesh with other edge lengths");
+  // Moved further, a face's longest edge can change.  Known bug (reported): the connectivity
+  // fingerprint (basis_file.cpp) hashes the corners in the order Intrinsic_mesh turned them to,
+  // longest edge first, so such a mesh is refused as "other connectivity" where its edge lengths
+  // are what differs.  Refused it is; which of the two reasons is left open until that is fixed.
   jitter_vertices(moved, 0.05, 9);
-  EXPECT_THROW(Basis::load(moved, path), TVF::Invalid_input);
+  EXPECT_THROW_REASON(Basis::load(moved, path), TVF::Invalid_input, "it belongs to a mesh with other");
   Mesh scaled = torus;
   transform(scaled, 2.0);
-  EXPECT_THROW(Basis::load(scaled, path), TVF::Invalid_input);
+  EXPECT_THROW_REASON(Basis::load(scaled, path), TVF::Invalid_input, "it belongs to a mesh with other edge lengths");
   // Corrupt and truncated files, and a missing file.
   {
     std::ifstream in(path, std::ios::binary);
@@ -275,9 +285,9 @@ TEST(SpectralBasis, SaveAndLoadRoundTripAndRefuseOtherMeshes)
     wrong_version[8] = 9;
     std::ofstream(path + ".version", std::ios::binary) << wrong_version;
   }
-  EXPECT_THROW(Basis::load(torus, path + ".short"), TVF::Invalid_input);
-  EXPECT_THROW(Basis::load(torus, path + ".version"), TVF::Invalid_input);
-  EXPECT_THROW(Basis::load(torus, path + ".missing"), TVF::Invalid_input);
+  EXPECT_THROW_REASON(Basis::load(torus, path + ".short"), TVF::Invalid_input, "the file is truncated");
+  EXPECT_THROW_REASON(Basis::load(torus, path + ".version"), TVF::Invalid_input, "file format version 9");
+  EXPECT_THROW_REASON(Basis::load(torus, path + ".missing"), TVF::Invalid_input, "cannot open the spectral basis file");
   std::remove(path.c_str());
   std::remove((path + ".short").c_str());
   std::remove((path + ".version").c_str());

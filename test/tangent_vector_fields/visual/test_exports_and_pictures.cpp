@@ -4,6 +4,7 @@
 // Showing fields: the export formats and their round trips, charts, and pictures (the
 // surface, hidden lines, colour maps, arrows and fur).
 
+#include "expect_reason.h"
 #include "scratch_path.h"
 #include "test_meshes.h"
 #include "visual_test_support.h"
@@ -77,10 +78,12 @@ TEST(Exports, VtpRoundTripIsExact)
   }
   EXPECT_TRUE(header);
   EXPECT_TRUE(active);
-  EXPECT_THROW(TVF::read_vtp(file, sphere, "missing", wind_back), TVF::Invalid_input);
+  EXPECT_THROW_REASON(TVF::read_vtp(file, sphere, "missing", wind_back),
+                      TVF::Invalid_input, "has no 3-component cell array 'missing'");
   Mesh other = make_icosphere(1);
   Field other_field = field_map(other, "x");
-  EXPECT_THROW(TVF::read_vtp(file, other, "wind", other_field), TVF::Invalid_input);
+  EXPECT_THROW_REASON(TVF::read_vtp(file, other, "wind", other_field),
+                      TVF::Invalid_input, "polygons, the mesh 80 faces");
 }
 
 TEST(Exports, VtpReaderRefusesWhatItCannotRead)
@@ -94,12 +97,13 @@ TEST(Exports, VtpReaderRefusesWhatItCannotRead)
   const TVF::Vtk_polydata ok = read(head + "format=\"ascii\">1 2.5 -3</DataArray></Points></Piece></PolyData></VTKFile>");
   ASSERT_EQ(ok.points.size(), 1u);
   EXPECT_EQ(ok.points[0], (P3{1, 2.5, -3}));
-  EXPECT_THROW(read(head + "format=\"binary\">AAAA</DataArray></Points></Piece></PolyData></VTKFile>"),
-               TVF::Invalid_input);
-  EXPECT_THROW(read(head + "format=\"ascii\">1 2</DataArray></Points></Piece></PolyData></VTKFile>"),
-               TVF::Invalid_input);
-  EXPECT_THROW(read("<VTKFile type=\"UnstructuredGrid\"></VTKFile>"), TVF::Invalid_input);
-  EXPECT_THROW(read("not xml at all"), TVF::Invalid_input);
+  EXPECT_THROW_REASON(read(head + "format=\"binary\">AAAA</DataArray></Points></Piece></PolyData></VTKFile>"),
+                      TVF::Invalid_input, "data arrays in format 'binary' are not read (only ascii)");
+  EXPECT_THROW_REASON(read(head + "format=\"ascii\">1 2</DataArray></Points></Piece></PolyData></VTKFile>"),
+                      TVF::Invalid_input, "has a partial tuple");
+  EXPECT_THROW_REASON(read("<VTKFile type=\"UnstructuredGrid\"></VTKFile>"),
+                      TVF::Invalid_input, "VTK file of type 'UnstructuredGrid', expected PolyData");
+  EXPECT_THROW_REASON(read("not xml at all"), TVF::Invalid_input, "not a VTK PolyData file");
 }
 
 TEST(Exports, RawFieldRoundTripIsExactAndFollowsDirectionalsLayout)
@@ -137,14 +141,15 @@ TEST(Exports, RawFieldRoundTripIsExactAndFollowsDirectionalsLayout)
   }
   TVF::read_raw_field(file2, torus, back, 1);
   for(Face_index f : torus.faces()) EXPECT_EQ(back[f], Vector_3(-field[f].y(), field[f].x(), 0.25));
-  EXPECT_THROW(TVF::read_raw_field(file2, torus, back, 2), TVF::Invalid_input);
+  EXPECT_THROW_REASON(TVF::read_raw_field(file2, torus, back, 2),
+                      TVF::Invalid_input, "has 2 vectors per face; direction 2 does not exist");
   Mesh other = make_torus(10, 8);
   Field other_field = field_map(other, "x");
-  EXPECT_THROW(TVF::read_raw_field(file, other, other_field), TVF::Invalid_input);
+  EXPECT_THROW_REASON(TVF::read_raw_field(file, other, other_field), TVF::Invalid_input, "has 192 faces, the mesh 160");
   std::istringstream truncated("1 3\n1 2 3\n4 5 6\n");
-  EXPECT_THROW(TVF::read_raw_field(truncated), TVF::Invalid_input);
+  EXPECT_THROW_REASON(TVF::read_raw_field(truncated), TVF::Invalid_input, "raw field: face 2 is missing or unreadable");
   std::istringstream extra("1 1\n1 2 3\n4\n");
-  EXPECT_THROW(TVF::read_raw_field(extra), TVF::Invalid_input);
+  EXPECT_THROW_REASON(TVF::read_raw_field(extra), TVF::Invalid_input, "raw field: more numbers than 1 faces");
 }
 
 TEST(Exports, StreamlinesAsObjPlyAndVtpKeepEveryPoint)
@@ -281,7 +286,8 @@ TEST(Charts, SvgLineChartHasOneCurvePerSeriesOnLogAxes)
   MR::Line_chart bad;
   bad.series.push_back({"x", {1, 2}, {1}});
   std::ostringstream sink;
-  EXPECT_THROW(MR::write_svg_line_chart(sink, bad), TVF::Invalid_input);
+  EXPECT_THROW_REASON(MR::write_svg_line_chart(sink, bad),
+                      TVF::Invalid_input, "chart: series 'x' has 2 x and 1 y values");
 }
 
 // ---------------------------------------------------------------------------
@@ -425,7 +431,7 @@ TEST(Pictures, ColourMapRangeAndLegend)
   EXPECT_LT(clipped.second, hi);
   EXPECT_GT(clipped.second, 0.5 * hi);
   std::vector<double> wrong(3, 0.);
-  EXPECT_THROW(picture.renderer().colour_faces(wrong), TVF::Invalid_input);
+  EXPECT_THROW_REASON(picture.renderer().colour_faces(wrong), TVF::Invalid_input, "renderer: expected one value per");
 }
 
 TEST(Pictures, ArrowsFurAndSvg)
@@ -480,6 +486,7 @@ TEST(Pictures, ArrowsFurAndSvg)
   EXPECT_NE(svg.find("width=\"300"), std::string::npos);
   EXPECT_NE(svg.find("<image"), std::string::npos); // the surface
   EXPECT_NE(svg.find("<path"), std::string::npos);  // the strokes, as vectors
-  EXPECT_THROW(fur.write_png("/nonexistent-folder/x.png"), TVF::Invalid_input);
+  EXPECT_THROW_REASON(fur.write_png("/nonexistent-folder/x.png"),
+                      TVF::Invalid_input, "cannot write '/nonexistent-folder/x.png'");
 }
 #endif

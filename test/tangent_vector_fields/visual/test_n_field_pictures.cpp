@@ -5,6 +5,7 @@
 // has the shape of its n and does not depend on which of the n vectors it is given), the
 // singular vertices marked where the surface shows them, and the wrappers on property maps.
 
+#include "expect_reason.h"
 #include "picture_test_support.h"
 #include "scratch_path.h"
 #include "test_meshes.h"
@@ -411,7 +412,8 @@ TEST(NFieldPictures, PicturesOfAnNFieldInAPropertyMap)
           ++count;
         }
   EXPECT_GT(around / count, 2 * density.mean());
-  EXPECT_THROW(a.add_n_field_glyphs(cross, 0), TVF::Invalid_input);
+  EXPECT_THROW_REASON(a.add_n_field_glyphs(cross, 0),
+                      TVF::Invalid_input, "renderer: the symmetry of glyphs must be at least 1, not 0");
 }
 
 TEST(NFieldPictures, LogarithmicColourScale)

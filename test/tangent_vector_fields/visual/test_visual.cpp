@@ -5,6 +5,7 @@
 // across edges, stopping where they should), evenly spaced seeding and fur.  The export
 // formats, charts and pictures are in test_exports_and_pictures.cpp.
 
+#include "expect_reason.h"
 #include "test_meshes.h"
 #include "visual_test_support.h"
 
@@ -471,14 +472,18 @@ TEST(Streamlines, BadArgumentsAreRefused)
   Mesh sphere = make_icosphere(1);
   Field field = ambient_field_map(sphere, "wind", 1);
   TVF::Mesh_streamline_tracer<Mesh> tracer(sphere, field);
-  EXPECT_THROW(tracer.tracer().trace(-1, {1, 0, 0}), TVF::Invalid_input);
-  EXPECT_THROW(tracer.tracer().trace(0, {NAN, 0, 0}), TVF::Invalid_input);
+  EXPECT_THROW_REASON(tracer.tracer().trace(-1, {1, 0, 0}), TVF::Invalid_input, "streamline: face -1 does not exist");
+  EXPECT_THROW_REASON(tracer.tracer().trace(0, {NAN, 0, 0}),
+                      TVF::Invalid_input, "streamline: non-finite barycentric coordinates");
   TVF::Evenly_spaced_options bad;
   bad.separation = 0;
-  EXPECT_THROW(tracer.evenly_spaced(bad), TVF::Invalid_input);
+  EXPECT_THROW_REASON(tracer.evenly_spaced(bad),
+                      TVF::Invalid_input, "evenly spaced streamlines: the separation must be positive");
   TVF::Fur_options no_count;
-  EXPECT_THROW(tracer.fur(no_count), TVF::Invalid_input);
-  EXPECT_THROW(TVF::Streamline_tracer(tracer.adapter().intrinsic_mesh(), Eigen::VectorXd::Zero(3)), TVF::Invalid_input);
+  EXPECT_THROW_REASON(tracer.fur(no_count),
+                      TVF::Invalid_input, "fur: give number_of_strokes or a positive finite density");
+  EXPECT_THROW_REASON(TVF::Streamline_tracer(tracer.adapter().intrinsic_mesh(), Eigen::VectorXd::Zero(3)),
+                      TVF::Invalid_input, "streamlines: the field has 3 frame coordinates");
   // A zero field gives a streamline of one point.
   Field zero = field_map(sphere, "zero");
   const TVF::Streamline s = TVF::trace_streamline(sphere, zero, *sphere.faces().begin(), sphere.point(Vertex_index(0)));
