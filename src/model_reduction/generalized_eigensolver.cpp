@@ -1,10 +1,6 @@
 // Copyright (c) 2026 The Model_reduction authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
-// Dense products go to the BLAS (OpenBLAS on Debian when libopenblas0-pthread is
-// installed): the orthogonalisation against the whole Krylov basis dominates.
-#define EIGEN_USE_BLAS
-
 #include <CGAL/Model_reduction/Generalized_eigensolver.h>
 #include <CGAL/Model_reduction/Sparse_ldlt_solver.h>
 #include <CGAL/Model_reduction/errors.h>

@@ -1,8 +1,6 @@
 // Copyright (c) 2026 The Model_reduction authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
-#define EIGEN_USE_BLAS
-
 #include <CGAL/Model_reduction/internal/Lanczos_window.h>
 #include <CGAL/Model_reduction/errors.h>
 

@@ -17,8 +17,6 @@
 // sequential code, and the orthogonalisation is memory-bound products of a tall basis
 // with a block of 4 columns, which a second BLAS thread barely speeds up.
 
-#define EIGEN_USE_BLAS
-
 #include <CGAL/Model_reduction/internal/Slicing_chain.h>
 #include <CGAL/Model_reduction/errors.h>
 #include <CGAL/Model_reduction/internal/One_blas_thread.h>

@@ -13,8 +13,6 @@
 // This file: a chain of windows (`Slicing_chain.h`), the split points between chains and
 // their join; `sliced_eigenpairs.cpp` runs the chains of one or several problems at once.
 
-#define EIGEN_USE_BLAS
-
 #include <CGAL/Model_reduction/internal/Slicing_chain.h>
 #include <CGAL/Model_reduction/errors.h>
 

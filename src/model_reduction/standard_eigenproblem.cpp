@@ -1,9 +1,6 @@
 // Copyright (c) 2026 The Model_reduction authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
-// Dense products go to the BLAS (OpenBLAS on Debian when libopenblas0-pthread is installed).
-#define EIGEN_USE_BLAS
-
 #include <CGAL/Model_reduction/internal/Standard_eigenproblem.h>
 #include <CGAL/Model_reduction/errors.h>
 

@@ -1,9 +1,6 @@
 // Copyright (c) 2026 The Tangent_vector_fields authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
-// Dense products with the eigenfunctions go to the BLAS.
-#define EIGEN_USE_BLAS
-
 #include <CGAL/Tangent_vector_fields/Eigenfield_basis.h>
 #include <CGAL/Model_reduction/Generalized_eigensolver.h>
 #include <CGAL/Tangent_vector_fields/errors.h>

@@ -5,13 +5,6 @@
 // Model_reduction::polygon_soup_to_mesh and decomposed, against a golden table
 // (robustness/cgal_data_tree.golden).
 
-// The shared eigensolver's sources use Eigen with its BLAS binding; this file's dense checks
-// instantiate some of the same Eigen kernels, and without the same binding the linker keeps
-// one of two different definitions (an ODR violation) for the library as well: the basis
-// test in this executable then failed on ALSTOM_TEST4.off (a spectrum-slicing window out of
-// budget) while the same test linked without this file passed.
-#define EIGEN_USE_BLAS
-
 #include "hodge_checks.h"
 #include "test_meshes.h"
 
