@@ -7,6 +7,7 @@
 #include <CGAL/Projective_dynamics/errors.h>
 #include <CGAL/Projective_dynamics/projections.h>
 
+#include <Eigen/Geometry>
 #include <Eigen/LU>
 
 #include <algorithm>

@@ -6,6 +6,9 @@
 #include <CGAL/Projective_dynamics/errors.h>
 #include <CGAL/Projective_dynamics/make_models.h>
 
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+
 #include <cmath>
 #include <string>
 

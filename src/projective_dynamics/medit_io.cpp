@@ -81,7 +81,7 @@ public:
     char* end = nullptr;
     const double v = std::strtod(t.c_str(), &end);
     if(end != t.c_str() + t.size()) fail(std::string("'") + t + "' is not " + what);
-    if(!std::isfinite(v)) fail(std::string("non-finite ") + what + " '" + t + "'");
+    if(!std::isfinite(v)) fail("a non-finite value '" + t + "' where " + what + " was expected");
     return v;
   }
 

@@ -5,6 +5,7 @@
 
 #include <CGAL/Projective_dynamics/projections.h>
 
+#include <Eigen/LU>
 #include <Eigen/SVD>
 
 #include <algorithm>
@@ -24,6 +25,10 @@ Eigen::Vector3d project_spring(const Eigen::Vector3d& d, double min_length, doub
   return d * (std::clamp(n, min_length, max_length) / n);
 }
 
+// GCC 12 warns that the fixed-size 3x2 JacobiSVD's singular values "may be used
+// uninitialized" inside Eigen (a false positive on its SSE copies): silenced here alone.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 Eigen::Matrix<double, 3, 2> project_triangle_strain(const Eigen::Matrix<double, 3, 2>& F, double smin, double smax)
 {
   // Fixed-size JacobiSVD computes the full U (3x3); its first two columns are the thin U.
@@ -31,6 +36,7 @@ Eigen::Matrix<double, 3, 2> project_triangle_strain(const Eigen::Matrix<double, 
   const Eigen::Vector2d s = svd.singularValues().cwiseMax(smin).cwiseMin(smax);
   return svd.matrixU().leftCols<2>() * s.asDiagonal() * svd.matrixV().transpose();
 }
+#pragma GCC diagnostic pop
 
 Eigen::Matrix3d project_tet_strain(const Eigen::Matrix3d& F, double smin, double smax)
 {
