@@ -140,3 +140,38 @@ TEST(Projections, TriangleStrainIsTheClosestPoint)
     }
   }
 }
+
+TEST(Projections, DegenerateAndExactStrainsProjectSafely)
+{
+  // The cases where a closed-form SVD loses accuracy (repeated singular values, rank deficiency)
+  // and the projection falls back to Jacobi: results stay rotations, exact input stays put.
+  std::mt19937 rng(23);
+  for(int trial = 0; trial < 20; ++trial)
+  {
+    const Eigen::Matrix3d R = random_rotation(rng);
+    const Eigen::Vector3d a = random_matrix<3, 1>(rng), b = random_matrix<3, 1>(rng);
+    for(const Eigen::Matrix3d& F : {Eigen::Matrix3d(R), Eigen::Matrix3d(Eigen::Matrix3d::Zero()), Eigen::Matrix3d(a * b.transpose()),
+                                    Eigen::Matrix3d(R * Eigen::Vector3d(1, 1, 1 + 1e-9).asDiagonal()),
+                                    Eigen::Matrix3d(R * Eigen::Vector3d(2, 1e-9, 0).asDiagonal()),
+                                    Eigen::Matrix3d(R * Eigen::Vector3d(1, 1, -1).asDiagonal())})
+    {
+      const Eigen::Matrix3d P = PD::project_tet_strain(F, 1, 1);
+      ASSERT_TRUE(P.allFinite());
+      EXPECT_LT((P.transpose() * P - Eigen::Matrix3d::Identity()).norm(), tolerance);
+      EXPECT_NEAR(P.determinant(), 1, tolerance);
+    }
+    EXPECT_LT((PD::project_tet_strain(R, 1, 1) - R).norm(), tolerance);
+    EXPECT_LT((PD::project_tet_strain(R, 0.5, 2) - R).norm(), tolerance);
+    EXPECT_LT((PD::project_tet_strain(R * Eigen::Vector3d(1, 1, 1 + 1e-9).asDiagonal(), 1, 1) - R).norm(), 1e-9);
+    const Eigen::Matrix<double, 3, 2> iso = R.leftCols<2>();
+    for(const Eigen::Matrix<double, 3, 2>& F :
+        {Eigen::Matrix<double, 3, 2>(iso), Eigen::Matrix<double, 3, 2>(Eigen::Matrix<double, 3, 2>::Zero()),
+         Eigen::Matrix<double, 3, 2>(a * b.head<2>().transpose())})
+    {
+      const Eigen::Matrix<double, 3, 2> P = PD::project_triangle_strain(F, 1, 1);
+      ASSERT_TRUE(P.allFinite());
+      EXPECT_LT((P.transpose() * P - Eigen::Matrix2d::Identity()).norm(), tolerance);
+    }
+    EXPECT_LT((PD::project_triangle_strain(iso, 1, 1) - iso).norm(), tolerance);
+  }
+}
