@@ -43,6 +43,7 @@ Elastic_model::Elastic_model(const Positions& rest, const Eigen::VectorXd& masse
   for(Eigen::Index v = 0; v < masses.size(); ++v)
     if(!(masses[v] >= 0) || !std::isfinite(masses[v]))
       throw Invalid_input("vertex " + std::to_string(v) + " has a negative or non-finite mass " + std::to_string(masses[v]));
+  S_.resize(0, rest.rows()); // no element yet: free particles
 }
 
 int Elastic_model::new_group(Element_type type, double stiffness)
@@ -50,7 +51,6 @@ int Elastic_model::new_group(Element_type type, double stiffness)
   check_stiffness(stiffness);
   group_stiffness_.push_back(stiffness);
   group_type_.push_back(type);
-  S_built_ = false;
   return int(group_stiffness_.size()) - 1;
 }
 
@@ -88,6 +88,7 @@ int Elastic_model::add_springs(const std::vector<Edge>& edges, double stiffness,
     triplets_.emplace_back(rows_, edge[1], 1.0);
     ++rows_;
   }
+  build_selection_matrix();
   return group;
 }
 
@@ -126,6 +127,7 @@ int Elastic_model::add_triangle_strain(const std::vector<Triangle>& triangles, d
     for(int r = 0; r < 2; ++r, ++rows_)
       for(int k = 0; k < 3; ++k) triplets_.emplace_back(rows_, f[k], C(r, k));
   }
+  build_selection_matrix();
   return group;
 }
 
@@ -158,6 +160,7 @@ int Elastic_model::add_tet_strain(const std::vector<Tetrahedron>& tets, double s
     for(int r = 0; r < 3; ++r, ++rows_)
       for(int k = 0; k < 4; ++k) triplets_.emplace_back(rows_, c[k], C(r, k));
   }
+  build_selection_matrix();
   return group;
 }
 
@@ -233,6 +236,7 @@ int Elastic_model::add_bending(const std::vector<Triangle>& triangles, double st
     elements_.push_back({Element_type::bending, group, rows_, 1, area[i], h.norm(), h.norm(), h});
     ++rows_;
   }
+  build_selection_matrix();
   return group;
 }
 
@@ -248,16 +252,11 @@ void Elastic_model::set_stiffness(int group, double stiffness)
 double Elastic_model::stiffness(int group) const { return group_stiffness_.at(group); }
 Element_type Elastic_model::group_type(int group) const { return group_type_.at(group); }
 
-const Eigen::SparseMatrix<double, Eigen::RowMajor>& Elastic_model::selection_matrix() const
+void Elastic_model::build_selection_matrix()
 {
-  if(!S_built_)
-  {
-    S_.resize(rows_, number_of_vertices());
-    S_.setFromTriplets(triplets_.begin(), triplets_.end());
-    S_.makeCompressed();
-    S_built_ = true;
-  }
-  return S_;
+  S_.resize(rows_, number_of_vertices());
+  S_.setFromTriplets(triplets_.begin(), triplets_.end());
+  S_.makeCompressed();
 }
 
 Eigen::VectorXd Elastic_model::row_weights() const

@@ -192,6 +192,31 @@ TEST(Simulator, HangingChainSettlesAtItsClosedForm)
   }
 }
 
+TEST(Simulator, FreeParticlesFollowImplicitEulerExactly)
+{
+  // Without elements, g is the inertia term alone: v_{k+1} = v_k + h (g + f/m), q_{k+1} = q_k + h v_{k+1},
+  // so after N steps q = q0 + N h v0 + h^2 (g + f/m) N (N + 1) / 2.
+  PD::Positions q0(3, 3), v0(3, 3), f = PD::Positions::Zero(3, 3);
+  q0 << 0, 0, 1, 2, 0, 0, 0, 3, 0;
+  v0 << 1, 0, 0, 0, -1, 2, 0, 0, 0;
+  f(2, 0) = 4;
+  const Eigen::VectorXd m = Eigen::Vector3d(1, 2, 0.5);
+  const Eigen::RowVector3d gravity(0, 0, -9.81);
+  const double h = 0.1;
+  const int N = 25;
+  PD::Simulator sim(PD::Elastic_model(q0, m), params::time_step(h).gravity(Eigen::Vector3d(gravity.transpose())));
+  sim.set_velocities(v0);
+  sim.set_external_forces(f);
+  for(int i = 0; i < N; ++i) sim.step();
+  for(int i = 0; i < 3; ++i)
+  {
+    const Eigen::RowVector3d a = gravity + f.row(i) / m[i];
+    const Eigen::RowVector3d expected = q0.row(i) + N * h * v0.row(i) + h * h * a * (N * (N + 1) / 2.0);
+    EXPECT_LT((sim.positions().row(i) - expected).norm(), 1e-12) << "particle " << i; // rounding of 25 steps
+    EXPECT_LT((sim.velocities().row(i) - (v0.row(i) + N * h * a)).norm(), 1e-12);
+  }
+}
+
 TEST(Simulator, LinearMomentumIsConservedWithoutExternalForces)
 {
   std::mt19937 rng(9);

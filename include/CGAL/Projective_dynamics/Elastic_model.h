@@ -89,7 +89,7 @@ public:
   const std::vector<Element>& elements() const { return elements_; }
 
   /// The stacked `S` (rows x n).
-  const Eigen::SparseMatrix<double, Eigen::RowMajor>& selection_matrix() const;
+  const Eigen::SparseMatrix<double, Eigen::RowMajor>& selection_matrix() const { return S_; }
   /// `w_i = stiffness * measure` of the element of each row.
   Eigen::VectorXd row_weights() const;
 
@@ -110,10 +110,11 @@ private:
   std::vector<Element_type> group_type_;
   std::vector<Element> elements_;
   int rows_ = 0;
-  // The triplets of S (row, vertex, coefficient), turned into a matrix on first request.
+  // The triplets of S (row, vertex, coefficient), made a matrix after each group is added (so
+  // that every const member is safe to call from several threads).
+  void build_selection_matrix();
   std::vector<Eigen::Triplet<double>> triplets_;
-  mutable Eigen::SparseMatrix<double, Eigen::RowMajor> S_;
-  mutable bool S_built_ = false;
+  Eigen::SparseMatrix<double, Eigen::RowMajor> S_;
 };
 
 } // namespace Projective_dynamics
