@@ -175,3 +175,26 @@ TEST(Projections, DegenerateAndExactStrainsProjectSafely)
     EXPECT_LT((PD::project_triangle_strain(iso, 1, 1) - iso).norm(), tolerance);
   }
 }
+
+TEST(Projections, InvertedTetWithClampsFlipsBeforeClamping)
+{
+  // F = R1 diag(1.5, 1.2, -1) R2 is inverted; the closest map with positive determinant and
+  // singular values in [0.5, 3] keeps R1 and R2 and clamps the signed -1 up to 0.5 (distance
+  // 1.5); clamping |-1| = 1 instead would give an improper map or one 2 away.
+  std::mt19937 rng(29);
+  std::uniform_real_distribution<double> s(0.5, 3);
+  for(int trial = 0; trial < 20; ++trial)
+  {
+    const Eigen::Matrix3d R1 = random_rotation(rng), R2 = random_rotation(rng);
+    const Eigen::Matrix3d F = R1 * Eigen::Vector3d(1.5, 1.2, -1).asDiagonal() * R2;
+    const Eigen::Matrix3d expected = R1 * Eigen::Vector3d(1.5, 1.2, 0.5).asDiagonal() * R2;
+    const Eigen::Matrix3d P = PD::project_tet_strain(F, 0.5, 3);
+    EXPECT_LT((P - expected).norm(), tolerance);
+    const double d = (F - P).norm();
+    for(int k = 0; k < 200; ++k)
+    {
+      const Eigen::Matrix3d A = random_rotation(rng) * Eigen::Vector3d(s(rng), s(rng), s(rng)).asDiagonal() * random_rotation(rng);
+      EXPECT_GE((F - A).norm(), d - tolerance);
+    }
+  }
+}
