@@ -334,6 +334,24 @@ TEST(Simulator, ParameterChangesRefactorAndMatchAFreshSimulator)
   EXPECT_EQ(a.positions().row(0), PD::to_positions(rod.points).row(0)); // pinned
 }
 
+TEST(Simulator, ThreadCountDoesNotChangeTheResult)
+{
+  // Each projection and each vertex's right-hand side is computed by one thread in a fixed
+  // order, so any number of threads gives the same bits.
+  const PD::Tet_mesh box = PD::make_tet_box(4, 3, 3, {0, 0, 0}, {1, 0.75, 0.75});
+  PD::Positions result[3];
+  for(int threads : {1, 2, 3})
+  {
+    PD::Simulator sim(PD::make_solid_model(box, params::strain_stiffness(1e3).spring_stiffness(10.0)),
+                      params::number_of_threads(threads));
+    sim.set_pinned_vertices({0, 5, 10});
+    for(int i = 0; i < 5; ++i) sim.step();
+    result[threads - 1] = sim.positions();
+  }
+  EXPECT_EQ(result[0], result[1]);
+  EXPECT_EQ(result[0], result[2]);
+}
+
 TEST(Simulator, BadInputIsRefusedWithItsReason)
 {
   const PD::Tet_mesh box = PD::make_tet_box(2, 1, 1, {0, 0, 0}, {1, 1, 1});
