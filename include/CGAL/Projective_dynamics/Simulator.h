@@ -105,8 +105,9 @@ public:
   /// Holds `vertices` where they are now (replacing earlier pins).
   /// \throws Invalid_input for an index out of range, naming it.
   void set_pinned_vertices(const std::vector<int>& vertices);
-  /// Holds `vertices` at `targets` (one row each), which `move_grabbed` moves.  A grabbed
-  /// vertex that is also pinned stays pinned.  \throws Invalid_input as above.
+  /// Holds `vertices` at `targets` (one row each, replacing earlier grabs), which
+  /// `move_grabbed` moves.  A grabbed vertex that is also pinned stays pinned.
+  /// \throws Invalid_input as above, or for a wrong number of targets or a non-finite one.
   void grab(const std::vector<int>& vertices, const Positions& targets);
   void move_grabbed(const Positions& targets);
   void release_grabbed();
