@@ -13,8 +13,10 @@
 
 // GCC 12 warns that the fixed-size JacobiSVDs' singular values "may be used uninitialized"
 // inside Eigen (a false positive on its SSE copies): silenced for this file's functions.
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 
 namespace CGAL {
 namespace Projective_dynamics {
@@ -123,4 +125,6 @@ Eigen::Vector3d project_bending(const Eigen::Vector3d& h, double rest_norm, cons
 } // namespace Projective_dynamics
 } // namespace CGAL
 
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic pop
+#endif
