@@ -99,6 +99,9 @@ TEST(Simulator, RestStateHasZeroEnergyAndStaysStill)
     const PD::Positions rest = model.rest_positions();
     PD::Simulator sim(std::move(model), params::gravity(Eigen::Vector3d::Zero()).time_step(0.01));
     for(int i = 0; i < 20; ++i) sim.step();
+    // At rest every projection returns S x itself (up to rounding), so each solve gives back the
+    // rest positions up to the solve's rounding (~1e-15 of coordinates of size 1): 1e-12; the
+    // velocities are those differences over h = 0.01.
     EXPECT_LT(max_abs(sim.positions() - rest), 1e-12);
     EXPECT_LT(max_abs(sim.velocities()), 1e-10);
   }
@@ -120,7 +123,7 @@ TEST(Simulator, EnergyIsRigidlyInvariant)
     const PD::Positions rest_moved = (model.rest_positions() * R.transpose()).rowwise() + t;
     const double e = model.elastic_energy(q);
     EXPECT_GT(e, 1e-6);
-    EXPECT_NEAR(model.elastic_energy(moved), e, 1e-12 * e);
+    EXPECT_NEAR(model.elastic_energy(moved), e, 1e-12 * e); // rounding of the rotated coordinates
     EXPECT_LT(model.elastic_energy(rest_moved), 1e-24);
   }
 }
@@ -320,7 +323,7 @@ TEST(Simulator, ParameterChangesRefactorAndMatchAFreshSimulator)
   a.step();
   b.step();
   EXPECT_EQ(a.number_of_factorizations(), 2);
-  EXPECT_LT(max_abs(a.positions() - b.positions()), 1e-12);
+  EXPECT_LT(max_abs(a.positions() - b.positions()), 1e-12); // the same sums in another order at most
 
   // A grabbed vertex follows its target; moving the target does not refactor.
   a.grab({23}, a.positions().row(23) + Eigen::RowVector3d(0, 0, 0.1));
