@@ -1,0 +1,22 @@
+// Copyright (c) 2026 The Projective_dynamics authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// X-macro list of the named parameters this package adds to CGAL's and the shared ones.
+// Deliberately without include guard: it is included several times with
+// different definitions of MR_add_named_parameter(tag_type, tag_value, function_name).
+// (The number of local/global iterations per step is CGAL's own `number_of_iterations`.)
+
+// The simulator: time step h, gravity (an acceleration, Eigen::Vector3d), worker threads of
+// the local steps, friction factor of the obstacles in [0, 1]
+MR_add_named_parameter(time_step_t, time_step, time_step)
+MR_add_named_parameter(gravity_t, gravity, gravity)
+MR_add_named_parameter(number_of_threads_t, number_of_threads, number_of_threads)
+MR_add_named_parameter(friction_t, friction, friction)
+
+// The elastic models built from meshes: mass density, stiffnesses per element type, and the
+// strain limits [rmin, rmax] of the springs and strain elements (std::pair<double, double>)
+MR_add_named_parameter(density_t, density, density)
+MR_add_named_parameter(spring_stiffness_t, spring_stiffness, spring_stiffness)
+MR_add_named_parameter(strain_stiffness_t, strain_stiffness, strain_stiffness)
+MR_add_named_parameter(bending_stiffness_t, bending_stiffness, bending_stiffness)
+MR_add_named_parameter(strain_limits_t, strain_limits, strain_limits)
