@@ -56,6 +56,16 @@ Model_reduction::Eigensolver_options eigensolver_options(const NamedParameters& 
 
 } // namespace internal
 
+/// The matrices `vibration_modes` solves for `mesh` as a discrete shell: the rest Hessian and
+/// lumped mass over the vertices not pinned, and the rigid motions the pins leave free; what
+/// the uses of modes (`linear_simulation.h`, `Elastic_deformer.h`) work on.
+/// Named parameters: the shell's stiffnesses, `pinned_vertices`, `vertex_point_map`, `vertex_index_map`.
+template <class TriangleMesh, class NamedParameters = parameters::Default_named_parameters>
+Mode_problem mesh_mode_problem(const TriangleMesh& mesh, const NamedParameters& np = parameters::default_values())
+{
+  return internal::shell_problem_of_mesh(mesh, np);
+}
+
 /// The `count` lowest vibration modes of `mesh` as a discrete shell (SPEC 13.2), after the
 /// rigid motions left free by the pins.
 /// \cgalNamedParamsBegin
