@@ -5,6 +5,7 @@
 #include <CGAL/Vibration_modes/errors.h>
 
 #include <CGAL/Model_reduction/Sparse_spd_solver.h>
+#include <CGAL/Model_reduction/internal/One_blas_thread.h>
 
 #include "free_unknowns.h"
 
@@ -47,6 +48,9 @@ template <class Vector, class Mass, class Stiffness, class Solve_mass, class Sol
 void newmark(const Linear_simulation_options& o, Vector u, Vector v, const Mass& mass, const Stiffness& stiffness,
              const Solve_mass& solve_mass, const Solve_step& solve_step, const Force& force, const Record& record)
 {
+  // Every step is a few single-vector products and solves: OpenBLAS's threads would spend
+  // the time waking up (as in compressed_modes.cpp).
+  Model_reduction::internal::One_blas_thread one_blas_thread;
   const double h = o.time_step, alpha = o.rayleigh_mass, beta = o.rayleigh_stiffness;
   auto damping = [&](const Vector& x) -> Vector {
     Vector c = Vector::Zero(x.size());
