@@ -51,6 +51,16 @@ double penalty_scale(double h_scale, const Eigen::SparseMatrix<double>& C)
   return (h_scale > 0 ? h_scale : 1.0) / rows.maxCoeff();
 }
 
+// What expand() needs of a problem (the deformers do not keep a reference to the caller's).
+Mode_problem layout_of(const Mode_problem& p)
+{
+  Mode_problem l;
+  l.free_unknowns = p.free_unknowns;
+  l.full_size = p.full_size;
+  l.group_size = p.group_size;
+  return l;
+}
+
 } // namespace
 
 Handle_constraints handle_constraints(const Mode_problem& p, const std::vector<std::vector<int>>& handles)
@@ -91,7 +101,7 @@ Handle_constraints handle_constraints(const Mode_problem& p, const std::vector<s
 
 Reduced_elastic_deformer::Reduced_elastic_deformer(const Mode_problem& p, const Eigen::MatrixXd& modes,
                                                    const std::vector<std::vector<int>>& handles, bool with_kernel)
-  : p_(p), constraints_(handle_constraints(p, handles))
+  : layout_(layout_of(p)), constraints_(handle_constraints(p, handles))
 {
   const Eigen::MatrixXd U = internal::free_rows(p, modes, "elastic deformer: the modes");
   const Eigen::Index kernel = with_kernel ? p.kernel.cols() : 0;
@@ -131,10 +141,10 @@ const Eigen::VectorXd& Reduced_elastic_deformer::drag(const Eigen::MatrixXd& tar
   return q_;
 }
 
-Eigen::VectorXd Reduced_elastic_deformer::displacement() const { return p_.expand(B_ * q_); }
+Eigen::VectorXd Reduced_elastic_deformer::displacement() const { return layout_.expand(B_ * q_); }
 
 Full_elastic_deformer::Full_elastic_deformer(const Mode_problem& p, const std::vector<std::vector<int>>& handles)
-  : p_(p), constraints_(handle_constraints(p, handles))
+  : layout_(layout_of(p)), constraints_(handle_constraints(p, handles))
 {
   const Eigen::SparseMatrix<double>& C = constraints_.C;
   if(p.kernel.cols() > 0) check_kernel_held(Eigen::MatrixXd(C * p.kernel), "elastic deformer");
@@ -151,7 +161,7 @@ Full_elastic_deformer::Full_elastic_deformer(const Mode_problem& p, const std::v
 
 Eigen::VectorXd Full_elastic_deformer::deform(const Eigen::MatrixXd& targets) const
 {
-  return p_.expand(G_ * target_vector(constraints_, targets));
+  return layout_.expand(G_ * target_vector(constraints_, targets));
 }
 
 } // namespace Vibration_modes

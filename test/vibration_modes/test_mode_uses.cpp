@@ -232,7 +232,12 @@ TEST(ElasticModelling, OnEveryModeEqualsTheFullSolutionAndMeetsTheHandles)
 
 TEST(ElasticModelling, TranslatingEveryHandleTranslatesTheBody)
 {
-  const VM::Mode_problem p = problem_of(lumpy_sphere(2));
+  const Mesh mesh = lumpy_sphere(2);
+  const VM::Mode_problem p = VM::mesh_mode_problem(mesh, VM::parameters::bending_stiffness(0.01));
+  // Handles given as vertex descriptors.
+  const std::vector<std::vector<Vertex_index>> descriptors = {
+      {Vertex_index(0)}, {Vertex_index(5)}, {Vertex_index(17), Vertex_index(18), Vertex_index(19)}, {Vertex_index(30)}};
+  ASSERT_EQ(VM::handle_vertex_indices(mesh, descriptors), some_handles());
   const VM::Modes modes = VM::lowest_vibration_modes(p, 10);
   VM::Reduced_elastic_deformer reduced(p, modes.vectors, some_handles());
   VM::Full_elastic_deformer full(p, some_handles());

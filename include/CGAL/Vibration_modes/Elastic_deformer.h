@@ -21,6 +21,9 @@
 
 #include <CGAL/Vibration_modes/Mode_problem.h>
 #include <CGAL/Vibration_modes/Modes.h>
+#include <CGAL/Vibration_modes/named_function_parameters.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
 
 #include <CGAL/Model_reduction/Sparse_spd_solver.h>
 
@@ -45,6 +48,28 @@ struct Handle_constraints
 /// \throws Invalid_input naming the handle for an empty handle, a vertex outside the mesh,
 ///         or a vertex that is pinned or in no triangle (it cannot move).
 Handle_constraints handle_constraints(const Mode_problem& problem, const std::vector<std::vector<int>>& handles);
+
+/// The handles of `mesh` (a range of ranges of vertex descriptors) as the vertex indices the
+/// deformers take (those of the vertex index map, the order of `mesh_mode_problem`).
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_index_map} as in CGAL \cgalParamNEnd
+/// \cgalNamedParamsEnd
+/// \code
+/// VM::Reduced_elastic_deformer d(p, modes.vectors, VM::handle_vertex_indices(mesh, std::vector<std::vector<vertex_descriptor>>{{top}, {tail}}));
+/// \endcode
+template <class TriangleMesh, class HandleRanges, class NamedParameters = parameters::Default_named_parameters>
+std::vector<std::vector<int>> handle_vertex_indices(const TriangleMesh& mesh, const HandleRanges& handles,
+                                                    const NamedParameters& np = parameters::default_values())
+{
+  const auto vim = CGAL::get_initialized_vertex_index_map(mesh, np);
+  std::vector<std::vector<int>> indices;
+  for(const auto& handle : handles)
+  {
+    indices.emplace_back();
+    for(const auto& v : handle) indices.back().push_back(int(get(vim, v)));
+  }
+  return indices;
+}
 
 /// Precomputed reduced modelling in the span of the kernel of `H` (if `with_kernel`) and `k`
 /// modes: `q = G d` with `G` of size `k x (group_size handles)`, so a drag costs `O(k x handles)`.
@@ -74,7 +99,7 @@ public:
   double energy() const { return q_.dot(Hr_ * q_); }
 
 private:
-  const Mode_problem& p_;
+  Mode_problem layout_; // the free unknowns and full size only, for expand()
   Handle_constraints constraints_;
   Eigen::MatrixXd B_, Hr_, G_;
   Eigen::VectorXd q_;
@@ -93,7 +118,7 @@ public:
   Eigen::VectorXd deform(const Eigen::MatrixXd& targets) const;
 
 private:
-  const Mode_problem& p_;
+  Mode_problem layout_; // the free unknowns and full size only, for expand()
   Handle_constraints constraints_;
   Eigen::MatrixXd G_;
 };
