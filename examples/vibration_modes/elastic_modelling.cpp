@@ -77,11 +77,9 @@ int main(int argc, char** argv)
     std::printf("handle error %.1e; full resolution: %.0f ms (factor and solve), relative difference %.3g, "
                 "energy %.4g (reduced %.4g)\n",
                 handle_error, 1e3 * full_time, difference, uf.dot(problem.H * uf), deformer.energy());
-    for(auto v : vertices(mesh))
-    {
-      const Eigen::Index i = 3 * Eigen::Index(v);
-      mesh.point(v) += Kernel::Vector_3(u[i], u[i + 1], u[i + 2]);
-    }
+    auto displacement = mesh.add_property_map<Vertex_index, Kernel::Vector_3>("v:displacement").first;
+    VM::copy_displacement_to_vertex_map(mesh, u, displacement);
+    for(auto v : vertices(mesh)) mesh.point(v) += displacement[v];
     if(!CGAL::IO::write_polygon_mesh(output, mesh, CGAL::parameters::stream_precision(17))) return 1;
     std::cout << "wrote " << output << "\n";
   }

@@ -57,16 +57,13 @@ int main(int argc, char** argv)
     std::printf("reduced simulation: %d steps in %.1f ms; full: %.1f ms; relative error of the reduced trajectory %.3g\n",
                 o.steps, 1e3 * reduced_time, 1e3 * full_time, VM::relative_trajectory_error(problem, reduced, full));
 
-    const Eigen::VectorXd x = CGAL::Discrete_shells::stacked_positions(mesh);
+    // Each frame as a per-vertex displacement map, added to a copy of the mesh.
+    auto u = mesh.add_property_map<Vertex_index, Kernel::Vector_3>("v:displacement").first;
     for(Eigen::Index f = 0; f < reduced.displacements.cols(); ++f)
     {
+      VM::copy_displacement_to_vertex_map(mesh, reduced.displacements.col(f), u);
       Mesh frame = mesh;
-      for(auto v : vertices(frame))
-      {
-        const Eigen::Index i = 3 * Eigen::Index(v);
-        frame.point(v) = Kernel::Point_3(x[i] + reduced.displacements(i, f), x[i + 1] + reduced.displacements(i + 1, f),
-                                         x[i + 2] + reduced.displacements(i + 2, f));
-      }
+      for(auto v : vertices(frame)) frame.point(v) = mesh.point(v) + u[v];
       char name[32];
       std::snprintf(name, sizeof(name), "_%03d.obj", int(f));
       if(!CGAL::IO::write_polygon_mesh(prefix + name, frame, CGAL::parameters::stream_precision(10))) return 1;

@@ -162,6 +162,30 @@ TEST(LinearSimulation, ReducedErrorFallsAsModesAreAdded)
   EXPECT_LT(last, 0.2);
 }
 
+TEST(LinearSimulation, ForcesAndFramesAsVertexMaps)
+{
+  Mesh mesh = lumpy_sphere(1);
+  auto force = mesh.add_property_map<Vertex_index, Vector_3>("v:force", Vector_3(0, 0, 0)).first;
+  force[Vertex_index(4)] = Vector_3(0, 0, -0.5);
+  force[Vertex_index(9)] = Vector_3(0.25, 0, 0);
+  const VM::Mode_problem p = VM::mesh_mode_problem(mesh, VM::parameters::bending_stiffness(0.01));
+  VM::Linear_simulation_options o;
+  o.steps = 10;
+  o.force = VM::stacked_vertex_vectors(mesh, force);
+  EXPECT_EQ(o.force[14], -0.5);
+  EXPECT_EQ(o.force[27], 0.25);
+  EXPECT_EQ(o.force.norm(), std::sqrt(0.3125));
+  const VM::Linear_trajectory t = VM::full_linear_simulation(p, o);
+  auto frame = mesh.add_property_map<Vertex_index, Vector_3>("v:displacement").first;
+  VM::copy_displacement_to_vertex_map(mesh, t.displacements.col(10), frame);
+  for(auto v : vertices(mesh))
+    for(int c = 0; c < 3; ++c) EXPECT_EQ(frame[v][c], t.displacements(3 * Eigen::Index(v) + c, 10));
+  EXPECT_THROW_REASON(VM::copy_displacement_to_vertex_map(mesh, Eigen::VectorXd::Zero(5), frame), VM::Invalid_input,
+                      "not 3 per vertex");
+  force[Vertex_index(2)] = Vector_3(0, std::nan(""), 0);
+  EXPECT_THROW_REASON(VM::stacked_vertex_vectors(mesh, force), VM::Invalid_input, "vertex 2 is not finite");
+}
+
 TEST(LinearSimulation, RefusesBadInputWithTheReason)
 {
   const VM::Mode_problem p = problem_of(lumpy_sphere(1));
