@@ -445,3 +445,53 @@ TEST(ModesFile, RefusesAnotherMeshWithTheReason)
   EXPECT_THROW_REASON(VM::load_modes(scratch_path("cut.vmb"), x, triangles), VM::Invalid_input, "truncated");
   EXPECT_THROW_REASON(VM::load_modes(scratch_path("absent.vmb"), x, triangles), VM::Invalid_input, "cannot open");
 }
+
+TEST(ModesFile, CorruptFilesAreRefusedOrLoadFinite)
+{
+  // A small deterministic fuzz of the reader (the libFuzzer targets cover the other formats):
+  // every corrupted or cut copy either loads with finite values of the right sizes or is
+  // refused with Invalid_input.
+  const Mesh mesh = lumpy_sphere(1);
+  const Eigen::VectorXd x = DS::stacked_positions(mesh);
+  const auto triangles = triangles_of(mesh);
+  const VM::Mode_problem p = problem_of(mesh);
+  VM::Compressed_mode_options o;
+  o.sparsity_weight = 0.5;
+  const VM::Modes modes = VM::compressed_modes(p, 2, o);
+  const std::string path = scratch_path("fuzzed.vmb");
+  VM::save_modes(path, modes, {}, x, triangles);
+  std::string bytes;
+  {
+    std::ifstream in(path, std::ios::binary);
+    bytes.assign((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  }
+  std::mt19937 rng(5);
+  int loaded = 0, refused = 0;
+  for(int trial = 0; trial < 400; ++trial)
+  {
+    std::string copy = bytes;
+    if(trial % 4 == 0)
+      copy.resize(rng() % copy.size());
+    else
+      for(int flips = 1 + int(rng() % 3); flips > 0; --flips) copy[rng() % copy.size()] ^= char(1 + rng() % 255);
+    {
+      std::ofstream out(path, std::ios::binary | std::ios::trunc);
+      out.write(copy.data(), std::streamsize(copy.size()));
+    }
+    try
+    {
+      const VM::Modes m = VM::load_modes(path, x, triangles);
+      EXPECT_EQ(m.vectors.rows(), x.size());
+      EXPECT_TRUE(m.vectors.allFinite() && m.energies.allFinite());
+      EXPECT_EQ(m.energies.size(), m.vectors.cols());
+      ++loaded;
+    }
+    catch(const VM::Invalid_input& e)
+    {
+      EXPECT_NE(std::string(e.what()).find("cannot load the vibration modes"), std::string::npos) << e.what();
+      ++refused;
+    }
+  }
+  EXPECT_GT(refused, 100); // cut files and flips in the header and sizes
+  EXPECT_GT(loaded, 0);    // flips inside the values load (the format has no checksum)
+}
