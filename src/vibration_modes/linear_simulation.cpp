@@ -135,7 +135,6 @@ Linear_trajectory reduced_linear_simulation(const Mode_problem& p, const Eigen::
   if(kernel > 0) B.leftCols(kernel) = p.kernel;
   B.rightCols(U.cols()) = U;
   if(B.cols() == 0) throw Invalid_input("reduced linear simulation: no modes and no kernel: the basis is empty");
-  const Eigen::Index k = B.cols();
   const Eigen::MatrixXd MB = p.mass.asDiagonal() * B;
   const Eigen::MatrixXd Mr = B.transpose() * MB;
   const Eigen::MatrixXd Hr = B.transpose() * (p.H * B);
@@ -175,7 +174,6 @@ Linear_trajectory reduced_linear_simulation(const Mode_problem& p, const Eigen::
         r.trajectory.energies[r.frame] = 0.5 * w.dot(Mr * w) + 0.5 * q.dot(Hr * q);
         r.trajectory.displacements.col(r.frame++) = p.expand(B * q);
       });
-  (void)k;
   return r.trajectory;
 }
 

@@ -45,7 +45,8 @@ void save_modes(const std::string& path, const Modes& modes, const Mode_settings
                 const Eigen::VectorXd& positions, const std::vector<Discrete_shells::Shell_energy::Triangle>& triangles);
 
 /// Reads modes saved by `save_modes` for this mesh.  If `expected` is given, the stored
-/// settings must equal it (same group size, pinned set and stiffnesses to 1e-12 relative);
+/// settings must equal it (same group size unless `expected->group_size` is 0, pinned set, and
+/// for a shell the stiffnesses to 1e-12 relative);
 /// `found`, if given, receives the stored settings.
 /// \throws Invalid_input "cannot load the vibration modes from '<path>': <reason>", the reason
 ///         one of: not a vibration modes file; file format version; "it belongs to a mesh with
