@@ -56,6 +56,16 @@ Model_reduction::Eigensolver_options eigensolver_options(const NamedParameters& 
 
 } // namespace internal
 
+/// The matrices `vibration_modes` solves for `mesh` as a discrete shell: the rest Hessian and
+/// lumped mass over the vertices not pinned, and the rigid motions the pins leave free; what
+/// the uses of modes (`linear_simulation.h`, `Elastic_deformer.h`) work on.
+/// Named parameters: the shell's stiffnesses, `pinned_vertices`, `vertex_point_map`, `vertex_index_map`.
+template <class TriangleMesh, class NamedParameters = parameters::Default_named_parameters>
+Mode_problem mesh_mode_problem(const TriangleMesh& mesh, const NamedParameters& np = parameters::default_values())
+{
+  return internal::shell_problem_of_mesh(mesh, np);
+}
+
 /// The `count` lowest vibration modes of `mesh` as a discrete shell (SPEC 13.2), after the
 /// rigid motions left free by the pins.
 /// \cgalNamedParamsBegin
@@ -97,23 +107,56 @@ Modes compressed_vibration_modes(const TriangleMesh& mesh, int count,
   return compressed_modes(internal::shell_problem_of_mesh(mesh, np), count, o);
 }
 
+/// Writes a displacement over all `3 * num_vertices(mesh)` unknowns (a mode, a frame of a
+/// `Linear_trajectory`, an elastic deformer's displacement) into `vector_map` (vertex descriptor
+/// -> `Vector_3`), in the vertex index map's order.
+/// \throws Invalid_input if `u` does not have 3 entries per vertex; nothing is written then.
+template <class TriangleMesh, class VectorMap, class NamedParameters = parameters::Default_named_parameters>
+void copy_displacement_to_vertex_map(const TriangleMesh& mesh, const Eigen::VectorXd& u, VectorMap vector_map,
+                                     const NamedParameters& np = parameters::default_values())
+{
+  typedef typename boost::property_traits<VectorMap>::value_type Vector_3;
+  if(u.size() != 3 * Eigen::Index(num_vertices(mesh)))
+    throw Invalid_input("a displacement of " + std::to_string(u.size()) + " entries, not 3 per vertex of the mesh");
+  const auto vim = CGAL::get_initialized_vertex_index_map(mesh, np);
+  for(auto v : vertices(mesh))
+  {
+    const Eigen::Index k = 3 * Eigen::Index(get(vim, v));
+    put(vector_map, v, Vector_3(u[k], u[k + 1], u[k + 2]));
+  }
+}
+
+/// The values of a per-vertex `Vector_3` map stacked as the unknowns are (3 per vertex, in the
+/// vertex index map's order): forces and initial states of a `Linear_simulation_options`.
+/// \throws Invalid_input naming the vertex for a non-finite value.
+template <class TriangleMesh, class VectorMap, class NamedParameters = parameters::Default_named_parameters>
+Eigen::VectorXd stacked_vertex_vectors(const TriangleMesh& mesh, VectorMap vector_map,
+                                       const NamedParameters& np = parameters::default_values())
+{
+  const auto vim = CGAL::get_initialized_vertex_index_map(mesh, np);
+  Eigen::VectorXd u(3 * Eigen::Index(num_vertices(mesh)));
+  for(auto v : vertices(mesh))
+  {
+    const auto& value = get(vector_map, v);
+    const Eigen::Index k = 3 * Eigen::Index(get(vim, v));
+    u[k] = CGAL::to_double(value.x()), u[k + 1] = CGAL::to_double(value.y()), u[k + 2] = CGAL::to_double(value.z());
+    if(!u.segment<3>(k).allFinite())
+      throw Invalid_input("the vector of vertex " + std::to_string(get(vim, v)) + " is not finite");
+  }
+  return u;
+}
+
 /// Writes mode `i` of `modes` into `vector_map` (vertex descriptor -> `Vector_3`).
 template <class TriangleMesh, class VectorMap, class NamedParameters = parameters::Default_named_parameters>
 void copy_mode_to_vertex_map(const TriangleMesh& mesh, const Modes& modes, int i, VectorMap vector_map,
                              const NamedParameters& np = parameters::default_values())
 {
-  typedef typename boost::property_traits<VectorMap>::value_type Vector_3;
   if(i < 0 || i >= modes.vectors.cols())
     throw Invalid_input("mode " + std::to_string(i) + " asked for, " + std::to_string(modes.vectors.cols()) +
                         " computed");
   if(modes.vectors.rows() != 3 * Eigen::Index(num_vertices(mesh)))
     throw Invalid_input("the modes have " + std::to_string(modes.vectors.rows()) + " entries, not 3 per vertex of the mesh");
-  const auto vim = CGAL::get_initialized_vertex_index_map(mesh, np);
-  for(auto v : vertices(mesh))
-  {
-    const Eigen::Index k = 3 * Eigen::Index(get(vim, v));
-    put(vector_map, v, Vector_3(modes.vectors(k, i), modes.vectors(k + 1, i), modes.vectors(k + 2, i)));
-  }
+  copy_displacement_to_vertex_map(mesh, modes.vectors.col(i), vector_map, np);
 }
 
 } // namespace Vibration_modes

@@ -12,3 +12,6 @@ MR_add_named_parameter(pinned_vertices_t, pinned_vertices, pinned_vertices)
 
 // Compressed modes: the sparsity weight mu
 MR_add_named_parameter(sparsity_weight_t, sparsity_weight, sparsity_weight)
+
+// Segmentation by modes: a vertex whose winning mode is below this fraction of its peak is unassigned
+MR_add_named_parameter(segmentation_threshold_t, segmentation_threshold, segmentation_threshold)
