@@ -108,7 +108,8 @@ Eigen::MatrixXd projection_subspace(const Elastic_model& model, int group, int c
   qr.setThreshold(1e-10);
   const int z = int(qr.rank());
   if(l < z) throw Invalid_input("l = " + std::to_string(l) + " is below the rank " + std::to_string(z) + " of the rest projections");
-  const Eigen::MatrixXd Q = Eigen::MatrixXd(qr.householderQ()).leftCols(z); // orthonormal in the scaled space
+  // The thin Q (rows x z) without forming the rows x rows one.
+  const Eigen::MatrixXd Q = qr.householderQ() * Eigen::MatrixXd::Identity(rows, z); // orthonormal in the scaled space
   Eigen::MatrixXd scaled = root.asDiagonal() * C;
   scaled -= Q * (Q.transpose() * scaled);
   Eigen::MatrixXd V(rows, l);
