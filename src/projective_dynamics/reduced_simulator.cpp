@@ -15,6 +15,7 @@
 #include <Eigen/Cholesky>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <string>
@@ -77,6 +78,7 @@ struct Group
   Eigen::MatrixXd L;         // U^T S_g^T diag(measure) S_g U (unit stiffness)
   // Hyper-reduction:
   std::vector<int> sampled;  // elements
+  int first_sampled = 0;     // its first in Impl::sampled_all
   int first_sampled_row = 0; // in the stacked rows of the sampled elements
   int sampled_rows = 0;
   Eigen::MatrixXd JV;        // sampled rows x l
@@ -255,6 +257,7 @@ struct Reduced_simulator::Impl
       const Sparse Sg = S.middleRows(G.first_row, G.rows);
       const Eigen::MatrixXd T = Sparse(Sg.transpose()) * (G.measure.asDiagonal() * V);
       G.F = Ut * T;
+      G.first_sampled = int(sampled_all.size());
       for(int e : G.sampled) sampled_all.push_back(e);
     }
     // The used vertices and the sampled rows of S on them.
@@ -307,37 +310,52 @@ struct Reduced_simulator::Impl
     timings.factorization = seconds_since(start);
   }
 
+  // Projections of the sampled elements and the fit's right-hand side (J V)^T p_S, in chunks on
+  // the thread pool (each chunk its own partial sum, added in a fixed order: same bits for any
+  // thread count).
   void local_hyper(const Eigen::MatrixXd& x, Eigen::MatrixXd& rhs)
   {
     const Rows xu = U_used * x;
     const auto& elements = model.elements();
-    Rows p(S_used.rows(), 3);
-    pool.run(sampled_all.size(), [&](std::size_t begin, std::size_t end) {
-      double value[9];
-      for(std::size_t q = begin; q < end; ++q)
-      {
-        const int e = sampled_all[q];
-        const int row = sampled_row[q];
-        for(int j = 0; j < elements[std::size_t(e)].rows; ++j)
-        {
-          double* out = value + 3 * j;
-          out[0] = out[1] = out[2] = 0;
-          for(Sparse::InnerIterator it(S_used, row + j); it; ++it)
-          {
-            const double* xk = xu.data() + 3 * it.col();
-            out[0] += it.value() * xk[0], out[1] += it.value() * xk[1], out[2] += it.value() * xk[2];
-          }
-        }
-        model.project(e, value, p.data() + 3 * row);
-      }
-    });
+    constexpr int chunks = 8;
     for(std::size_t g = 0; g < groups.size(); ++g)
     {
       const Group& G = groups[g];
       const double stiffness = model.stiffness(int(g));
       if(G.sampled.empty() || stiffness == 0) continue;
-      const Eigen::MatrixXd b = G.fit.solve(G.JV.transpose() * p.middleRows(G.first_sampled_row, G.sampled_rows));
-      rhs.noalias() += stiffness * (G.F * b);
+      const int count = int(G.sampled.size()), l = int(G.JV.cols());
+      std::array<Eigen::Matrix<double, Eigen::Dynamic, 3>, chunks> partial;
+      pool.run(chunks, [&](std::size_t begin, std::size_t end) {
+        double value[9];
+        Rows p;
+        for(std::size_t c = begin; c < end; ++c)
+        {
+          const int q0 = G.first_sampled + int(c) * count / chunks, q1 = G.first_sampled + int(c + 1) * count / chunks;
+          const int row0 = q0 < int(sampled_row.size()) ? sampled_row[std::size_t(q0)] : int(S_used.rows());
+          const int row1 = q1 < int(sampled_row.size()) ? sampled_row[std::size_t(q1)] : int(S_used.rows());
+          p.resize(row1 - row0, 3);
+          for(int q = q0; q < q1; ++q)
+          {
+            const int e = sampled_all[std::size_t(q)];
+            const int row = sampled_row[std::size_t(q)];
+            for(int j = 0; j < elements[std::size_t(e)].rows; ++j)
+            {
+              double* out = value + 3 * j;
+              out[0] = out[1] = out[2] = 0;
+              for(Sparse::InnerIterator it(S_used, row + j); it; ++it)
+              {
+                const double* xk = xu.data() + 3 * it.col();
+                out[0] += it.value() * xk[0], out[1] += it.value() * xk[1], out[2] += it.value() * xk[2];
+              }
+            }
+            model.project(e, value, p.data() + 3 * (row - row0));
+          }
+          partial[c].noalias() = G.JV.middleRows(row0 - G.first_sampled_row, row1 - row0).transpose() * p;
+        }
+      });
+      Eigen::Matrix<double, Eigen::Dynamic, 3> sum = Eigen::Matrix<double, Eigen::Dynamic, 3>::Zero(l, 3);
+      for(const auto& part : partial) sum += part;
+      rhs.noalias() += stiffness * (G.F * G.fit.solve(sum));
     }
   }
 
@@ -370,10 +388,11 @@ struct Reduced_simulator::Impl
   }
 
   // Pushes the penetrating collision vertices onto each floor by the smallest change of x in
-  // the norm of U^T M U along the normal; three rounds, as fixing some may move others.
+  // the norm of U^T M U along the normal, holding the pinned and grabbed vertices' heights; up to
+  // ten rounds, as fixing some may push others below.
   void resolve_floors(Eigen::MatrixXd& x) const
   {
-    for(int round = 0; round < 3; ++round)
+    for(int round = 0; round < 10; ++round)
     {
       bool moved = false;
       for(const Floor& f : floors)
@@ -392,6 +411,10 @@ struct Reduced_simulator::Impl
         }
         if(c.empty()) continue;
         moved = true;
+        // Pinned and grabbed vertices keep their height over the floor (a push must not undo a grab).
+        for(const std::vector<int>* held : {&pinned, &grabbed})
+          for(int i : *held)
+            if(std::find(c.begin(), c.end(), i) == c.end()) c.push_back(i), depth.push_back(0);
         Eigen::MatrixXd Uc(Eigen::Index(c.size()), k());
         for(std::size_t q = 0; q < c.size(); ++q) Uc.row(Eigen::Index(q)) = U.row(c[q]);
         const Eigen::MatrixXd Y = Mr_llt.solve(Uc.transpose());

@@ -25,7 +25,8 @@
 /// vertices (by default the position samples and, hyper-reduced, the sampled elements'
 /// vertices; `set_collision_vertices` chooses others): after the iterations, penetrating ones
 /// are pushed out by the smallest change of `a` in the norm of `U^T M U` along the floor's
-/// normal (three rounds).  Other vertices may dip below; no friction; no self-collision.
+/// normal, holding the pinned and grabbed vertices' heights (up to ten rounds).  Other vertices
+/// may dip below; no friction; no self-collision.
 /// Full positions are made only on request (`positions()`, `positions_of`).
 
 #include <CGAL/Projective_dynamics/Elastic_model.h>
