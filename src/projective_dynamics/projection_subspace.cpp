@@ -18,6 +18,26 @@
 namespace CGAL {
 namespace Projective_dynamics {
 
+namespace {
+// The coefficients E diag(lambda)^{-1/2} of the l leading eigenvectors of the Gram matrix G of
+// the candidates (c x c, symmetric positive semi-definite).
+Eigen::MatrixXd leading_coefficients(const Eigen::MatrixXd& G, int l)
+{
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(G);
+  // Eigen sorts the eigenvalues increasingly: the leading ones are the LAST columns (the
+  // reference's code takes the first ones, the least important).
+  const Eigen::Index c = G.cols();
+  const double largest = eig.eigenvalues()[c - 1];
+  const double lth = eig.eigenvalues()[c - l];
+  if(!(largest > 0) || !(lth > 1e-12 * largest))
+    throw Invalid_input("l = " + std::to_string(l) + " exceeds the numerical rank of the candidate columns (eigenvalue " + std::to_string(l) +
+                        " is " + std::to_string(lth) + ", the largest " + std::to_string(largest) + ")");
+  Eigen::MatrixXd E(c, l);
+  for(int k = 0; k < l; ++k) E.col(k) = eig.eigenvectors().col(c - 1 - k) / std::sqrt(eig.eigenvalues()[c - 1 - k]);
+  return E;
+}
+} // namespace
+
 Eigen::MatrixXd mass_weighted_pca(const Eigen::MatrixXd& C, const Eigen::VectorXd& weights, int l)
 {
   if(weights.size() != C.rows())
@@ -26,18 +46,7 @@ Eigen::MatrixXd mass_weighted_pca(const Eigen::MatrixXd& C, const Eigen::VectorX
   if(l < 0 || l > C.cols())
     throw Invalid_input("mass_weighted_pca: l = " + std::to_string(l) + " columns asked of " + std::to_string(C.cols()) + " candidates");
   if(l == 0) return Eigen::MatrixXd(C.rows(), 0);
-  const Eigen::MatrixXd G = C.transpose() * weights.asDiagonal() * C;
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(G);
-  // Eigen sorts the eigenvalues increasingly: the leading ones are the LAST columns (the
-  // reference's code takes the first ones, the least important).
-  const Eigen::Index c = C.cols();
-  const double largest = eig.eigenvalues()[c - 1];
-  const double lth = eig.eigenvalues()[c - l];
-  if(!(largest > 0) || !(lth > 1e-12 * largest))
-    throw Invalid_input("l = " + std::to_string(l) + " exceeds the numerical rank of the candidate columns (eigenvalue " + std::to_string(l) +
-                        " is " + std::to_string(lth) + ", the largest " + std::to_string(largest) + ")");
-  Eigen::MatrixXd E(c, l);
-  for(int k = 0; k < l; ++k) E.col(k) = eig.eigenvectors().col(c - 1 - k) / std::sqrt(eig.eigenvalues()[c - 1 - k]);
+  const Eigen::MatrixXd E = leading_coefficients(C.transpose() * weights.asDiagonal() * C, l);
   return C * E;
 }
 
@@ -70,7 +79,8 @@ Eigen::MatrixXd projection_subspace(const Elastic_model& model, int group, int c
   // Rest projections and element weights (mean of the vertex weights, renormalised).
   const Positions& x = model.rest_positions();
   const auto& S = model.selection_matrix();
-  Eigen::MatrixXd P(rows, 3), C = Eigen::MatrixXd::Zero(rows, 4 * m);
+  Eigen::MatrixXd P(rows, 3);
+  std::vector<Eigen::Triplet<double>> candidates; // C is sparse: an element sees a few samples
   Eigen::VectorXd measure(rows);
   for(int e : members)
   {
@@ -95,8 +105,9 @@ Eigen::MatrixXd projection_subspace(const Elastic_model& model, int group, int c
       for(int j = 0; j < m; ++j)
         if(omega[j] != 0)
         {
-          for(int c = 0; c < 3; ++c) C(r0 + r, 4 * j + c) = omega[j] * out[3 * r + c];
-          C(r0 + r, 4 * j + 3) = omega[j];
+          for(int c = 0; c < 3; ++c)
+            if(out[3 * r + c] != 0) candidates.emplace_back(r0 + r, 4 * j + c, omega[j] * out[3 * r + c]);
+          candidates.emplace_back(r0 + r, 4 * j + 3, omega[j]);
         }
     }
   }
@@ -110,13 +121,25 @@ Eigen::MatrixXd projection_subspace(const Elastic_model& model, int group, int c
   if(l < z) throw Invalid_input("l = " + std::to_string(l) + " is below the rank " + std::to_string(z) + " of the rest projections");
   // The thin Q (rows x z) without forming the rows x rows one.
   const Eigen::MatrixXd Q = qr.householderQ() * Eigen::MatrixXd::Identity(rows, z); // orthonormal in the scaled space
-  Eigen::MatrixXd scaled = root.asDiagonal() * C;
-  scaled -= Q * (Q.transpose() * scaled);
+  // The scaled candidates B = D^{1/2} C without the span of Q: B' = B - Q Q^T B, never formed
+  // densely (rows x 4m): its Gram matrix is B^T B - (Q^T B)^T (Q^T B), and its leading columns
+  // are B E - Q (Q^T B E).
+  Eigen::SparseMatrix<double> B(rows, 4 * m);
+  B.setFromTriplets(candidates.begin(), candidates.end());
+  B = root.asDiagonal() * B;
+  const Eigen::MatrixXd QtB = (Eigen::SparseMatrix<double>(B.transpose()) * Q).transpose(); // z x 4m
+  const Eigen::MatrixXd G = Eigen::MatrixXd(Eigen::SparseMatrix<double>(B.transpose()) * B) - QtB.transpose() * QtB;
+  if(l - z > 4 * m)
+    throw Invalid_input("l = " + std::to_string(l) + " exceeds the " + std::to_string(4 * m) + " candidate columns");
   Eigen::MatrixXd V(rows, l);
-  const Eigen::VectorXd unit = Eigen::VectorXd::Ones(rows);
   const Eigen::VectorXd inverse_root = root.cwiseInverse();
   V.leftCols(z) = inverse_root.asDiagonal() * Q;
-  V.rightCols(l - z) = inverse_root.asDiagonal() * mass_weighted_pca(scaled, unit, l - z);
+  if(l > z)
+  {
+    const Eigen::MatrixXd E = leading_coefficients(G, l - z);
+    const Eigen::MatrixXd BE = B * E;
+    V.rightCols(l - z) = inverse_root.asDiagonal() * (BE - Q * (QtB * E));
+  }
   return V;
 }
 

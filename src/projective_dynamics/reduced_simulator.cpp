@@ -10,6 +10,7 @@
 #include <CGAL/Projective_dynamics/Reduced_simulator.h>
 
 #include "element_graph.h"
+#include "hyper_reduction.h"
 #include "thread_pool.h"
 
 #include <Eigen/Cholesky>
@@ -71,20 +72,6 @@ struct Floor
   Eigen::Vector3d point, normal;
 };
 
-struct Group
-{
-  int first_row = 0, rows = 0;
-  Eigen::VectorXd measure;   // per row
-  Eigen::MatrixXd L;         // U^T S_g^T diag(measure) S_g U (unit stiffness)
-  // Hyper-reduction:
-  std::vector<int> sampled;  // elements
-  int first_sampled = 0;     // its first in Impl::sampled_all
-  int first_sampled_row = 0; // in the stacked rows of the sampled elements
-  int sampled_rows = 0;
-  Eigen::MatrixXd JV;        // sampled rows x l
-  Eigen::LLT<Eigen::MatrixXd> fit; // (J V)^T (J V)
-  Eigen::MatrixXd F;         // U^T S_g^T diag(measure) V (unit stiffness), k x l
-};
 } // namespace
 
 struct Reduced_simulator::Impl
@@ -98,7 +85,7 @@ struct Reduced_simulator::Impl
   Eigen::MatrixXd Mr;
   Eigen::LLT<Eigen::MatrixXd> Mr_llt;
   Eigen::VectorXd gvec; // U^T m
-  std::vector<Group> groups;
+  std::vector<internal::Reduced_group> groups;
   // Hyper-reduction: the sampled elements' rows on the used vertices.
   std::vector<int> used, sampled_all, sampled_row;
   Sparse U_used, S_used;
@@ -166,7 +153,7 @@ struct Reduced_simulator::Impl
     for(int e = 0; e < model.number_of_elements(); ++e) members[std::size_t(elements[std::size_t(e)].group)].push_back(e);
     for(std::size_t g = 0; g < groups.size(); ++g)
     {
-      Group& G = groups[g];
+      internal::Reduced_group& G = groups[g];
       if(members[g].empty()) continue;
       G.first_row = elements[std::size_t(members[g].front())].first_row;
       G.measure.resize(0);
@@ -198,91 +185,9 @@ struct Reduced_simulator::Impl
 
   void precompute_hyper(const std::vector<std::vector<int>>& members)
   {
-    const auto& elements = model.elements();
-    const Sparse& S = model.selection_matrix();
-    const internal::Element_graph graph = internal::element_graph(model);
-    const std::vector<int> spots = internal::farthest_point_samples(graph, std::min(r.sampled_elements, n()), nullptr);
-    std::vector<std::vector<int>> vertex_elements(static_cast<std::size_t>(n()));
-    std::vector<std::vector<int>> element_vertices(elements.size());
-    for(int e = 0; e < model.number_of_elements(); ++e)
-    {
-      element_vertices[std::size_t(e)] = internal::element_vertices(model, e);
-      for(int v : element_vertices[std::size_t(e)]) vertex_elements[std::size_t(v)].push_back(e);
-    }
-    int stacked = 0;
-    for(std::size_t g = 0; g < groups.size(); ++g)
-    {
-      Group& G = groups[g];
-      const std::vector<int>& mine = members[g];
-      if(mine.empty()) continue;
-      const int l = r.projection_columns;
-      if(int(mine.size()) < l + 20)
-        throw Invalid_input("element group " + std::to_string(g) + " has " + std::to_string(mine.size()) +
-                            " elements, fewer than l + 20 = " + std::to_string(l + 20) + " (too few to fit l projection columns)");
-      const Eigen::MatrixXd V =
-          projection_subspace(model, int(g), r.constraint_samples, r.constraint_radius_multiplier, l);
-      // One element at each farthest-point vertex (the first of this group there not taken yet);
-      // if the vertices run out, evenly spaced elements of the rest.
-      const int s = std::min(r.sampled_elements, int(mine.size()));
-      std::vector<char> taken(elements.size(), 0);
-      for(int v : spots)
-      {
-        if(int(G.sampled.size()) == s) break;
-        for(int e : vertex_elements[std::size_t(v)])
-          if(elements[std::size_t(e)].group == int(g) && !taken[std::size_t(e)])
-          {
-            taken[std::size_t(e)] = 1, G.sampled.push_back(e);
-            break;
-          }
-      }
-      std::vector<int> rest;
-      for(int e : mine)
-        if(!taken[std::size_t(e)]) rest.push_back(e);
-      const std::size_t need = std::size_t(s) - G.sampled.size();
-      for(std::size_t q = 0; q < need; ++q) G.sampled.push_back(rest[q * rest.size() / need]);
-      std::sort(G.sampled.begin(), G.sampled.end());
-
-      G.first_sampled_row = stacked;
-      std::vector<int> local_rows;
-      for(int e : G.sampled)
-        for(int q = 0; q < elements[std::size_t(e)].rows; ++q) local_rows.push_back(elements[std::size_t(e)].first_row + q - G.first_row);
-      G.sampled_rows = int(local_rows.size());
-      stacked += G.sampled_rows;
-      G.JV.resize(G.sampled_rows, l);
-      for(int q = 0; q < G.sampled_rows; ++q) G.JV.row(q) = V.row(local_rows[std::size_t(q)]);
-      G.fit.compute(G.JV.transpose() * G.JV);
-      if(G.fit.info() != Eigen::Success)
-        throw Numerical_failure("the fitting matrix (J V)^T (J V) of group " + std::to_string(g) +
-                                " is singular: more sampled elements or fewer projection columns");
-      const Sparse Sg = S.middleRows(G.first_row, G.rows);
-      const Eigen::MatrixXd T = Sparse(Sg.transpose()) * (G.measure.asDiagonal() * V);
-      G.F = Ut * T;
-      G.first_sampled = int(sampled_all.size());
-      for(int e : G.sampled) sampled_all.push_back(e);
-    }
-    // The used vertices and the sampled rows of S on them.
-    std::vector<int> index(std::size_t(n()), -1);
-    for(int e : sampled_all)
-      for(int v : element_vertices[std::size_t(e)])
-        if(index[std::size_t(v)] < 0) index[std::size_t(v)] = 0, used.push_back(v);
-    std::sort(used.begin(), used.end());
-    for(std::size_t q = 0; q < used.size(); ++q) index[std::size_t(used[q])] = int(q);
-    std::vector<Eigen::Triplet<double>> t;
-    int row = 0;
-    for(int e : sampled_all)
-    {
-      sampled_row.push_back(row);
-      const Element& el = elements[std::size_t(e)];
-      for(int q = 0; q < el.rows; ++q, ++row)
-        for(Sparse::InnerIterator it(S, el.first_row + q); it; ++it) t.emplace_back(row, index[std::size_t(it.col())], it.value());
-    }
-    S_used.resize(row, Eigen::Index(used.size()));
-    S_used.setFromTriplets(t.begin(), t.end());
-    t.clear();
-    for(std::size_t q = 0; q < used.size(); ++q)
-      for(Sparse::InnerIterator it(U, used[q]); it; ++it) t.emplace_back(int(q), int(it.col()), it.value());
-    U_used.resize(Eigen::Index(used.size()), k());
-    U_used.setFromTriplets(t.begin(), t.end());
+    internal::Hyper_sampling h = internal::sample_and_fit(model, r, U, Ut, members, groups);
+    used = std::move(h.used), sampled_all = std::move(h.sampled_all), sampled_row = std::move(h.sampled_row);
+    S_used = std::move(h.S_used), U_used = std::move(h.U_used);
   }
 
   void factor()
@@ -320,7 +225,7 @@ struct Reduced_simulator::Impl
     constexpr int chunks = 8;
     for(std::size_t g = 0; g < groups.size(); ++g)
     {
-      const Group& G = groups[g];
+      const internal::Reduced_group& G = groups[g];
       const double stiffness = model.stiffness(int(g));
       if(G.sampled.empty() || stiffness == 0) continue;
       const int count = int(G.sampled.size()), l = int(G.JV.cols());
