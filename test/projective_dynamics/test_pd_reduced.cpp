@@ -383,6 +383,15 @@ TEST(ProjectiveDynamicsReduced, BadInputRefusedWithReason)
   o.time_step = -1;
   EXPECT_THROW_REASON(PD::Reduced_simulator(model, o, small_hyper()), PD::Invalid_input, "time step");
   o = PD::Simulator_options();
+  r = small_hyper();
+  r.constraint_samples = 5; // 20 candidate columns for l = 40
+  EXPECT_THROW_REASON(PD::Reduced_simulator(model, o, r), PD::Invalid_input, "exceeds the 4 candidate columns");
+  {
+    // A basis that cannot reproduce the rest shape (only translations).
+    Eigen::SparseMatrix<double, Eigen::RowMajor> T(n, 1);
+    for(int i = 0; i < n; ++i) T.insert(i, 0) = 1;
+    EXPECT_THROW_REASON(PD::Reduced_simulator(model, T, o, small_hyper()), PD::Invalid_input, "does not reproduce the rest positions");
+  }
   PD::Reduced_simulator sim(model, o, small_hyper());
   EXPECT_THROW_REASON(sim.set_stiffness(0, -1), PD::Invalid_input, "stiffness");
   EXPECT_THROW_REASON(sim.positions_of({n}), PD::Invalid_input, "outside");
