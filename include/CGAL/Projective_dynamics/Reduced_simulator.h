@@ -93,6 +93,8 @@ public:
   Reduced_simulator(Elastic_model model, const Simulator_options& options, const Reduction_options& reduction);
   /// With an explicit basis `U` (n x k, e.g. the identity) instead of the samples'; `U` must
   /// reproduce the rest positions (`U a = x` solvable exactly), which the start state uses.
+  /// Its collision vertices are all vertices until `set_collision_vertices` says otherwise.
+  /// \throws Invalid_input for a wrong row count or a basis that does not reproduce the rest shape.
   Reduced_simulator(Elastic_model model, const Eigen::SparseMatrix<double, Eigen::RowMajor>& basis,
                     const Simulator_options& options, const Reduction_options& reduction);
   ~Reduced_simulator();
