@@ -20,3 +20,16 @@ MR_add_named_parameter(spring_stiffness_t, spring_stiffness, spring_stiffness)
 MR_add_named_parameter(strain_stiffness_t, strain_stiffness, strain_stiffness)
 MR_add_named_parameter(bending_stiffness_t, bending_stiffness, bending_stiffness)
 MR_add_named_parameter(strain_limits_t, strain_limits, strain_limits)
+
+// The reduced simulator (Reduced_simulator.h; its position samples m, k = 4m, are CGAL's own
+// `number_of_samples`): the position samples'
+// radius multiplier; hyper-reduction on or off; constraint-projection samples and their radius
+// multiplier; projection columns l per element group; sampled elements s per group; the
+// stiffness of the soft pins and grabs relative to mass / h^2
+MR_add_named_parameter(radius_multiplier_t, radius_multiplier, radius_multiplier)
+MR_add_named_parameter(hyper_reduction_t, hyper_reduction, hyper_reduction)
+MR_add_named_parameter(number_of_constraint_samples_t, number_of_constraint_samples, number_of_constraint_samples)
+MR_add_named_parameter(constraint_radius_multiplier_t, constraint_radius_multiplier, constraint_radius_multiplier)
+MR_add_named_parameter(number_of_projection_columns_t, number_of_projection_columns, number_of_projection_columns)
+MR_add_named_parameter(number_of_sampled_elements_t, number_of_sampled_elements, number_of_sampled_elements)
+MR_add_named_parameter(pin_stiffness_t, pin_stiffness, pin_stiffness)

@@ -1,0 +1,147 @@
+// Copyright (c) 2026 The Projective_dynamics authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+// Mass-weighted PCA and the constraint-projection subspace of one element group (SPEC 12).
+
+#include <CGAL/Projective_dynamics/Position_subspace.h>
+#include <CGAL/Projective_dynamics/Projection_subspace.h>
+#include <CGAL/Projective_dynamics/errors.h>
+
+#include "element_graph.h"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/QR>
+
+#include <cmath>
+#include <string>
+
+namespace CGAL {
+namespace Projective_dynamics {
+
+namespace {
+// The coefficients E diag(lambda)^{-1/2} of the l leading eigenvectors of the Gram matrix G of
+// the candidates (c x c, symmetric positive semi-definite).
+Eigen::MatrixXd leading_coefficients(const Eigen::MatrixXd& G, int l)
+{
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(G);
+  // Eigen sorts the eigenvalues increasingly: the leading ones are the LAST columns (the
+  // reference's code takes the first ones, the least important).
+  const Eigen::Index c = G.cols();
+  const double largest = eig.eigenvalues()[c - 1];
+  const double lth = eig.eigenvalues()[c - l];
+  if(!(largest > 0) || !(lth > 1e-12 * largest))
+    throw Invalid_input("l = " + std::to_string(l) + " exceeds the numerical rank of the candidate columns (eigenvalue " + std::to_string(l) +
+                        " is " + std::to_string(lth) + ", the largest " + std::to_string(largest) + ")");
+  Eigen::MatrixXd E(c, l);
+  for(int k = 0; k < l; ++k) E.col(k) = eig.eigenvectors().col(c - 1 - k) / std::sqrt(eig.eigenvalues()[c - 1 - k]);
+  return E;
+}
+} // namespace
+
+Eigen::MatrixXd mass_weighted_pca(const Eigen::MatrixXd& C, const Eigen::VectorXd& weights, int l)
+{
+  if(weights.size() != C.rows())
+    throw Invalid_input("mass_weighted_pca: " + std::to_string(weights.size()) + " weights for " + std::to_string(C.rows()) + " rows");
+  if((weights.array() < 0).any() || !weights.allFinite()) throw Invalid_input("mass_weighted_pca: the weights must be finite and >= 0");
+  if(l < 0 || l > C.cols())
+    throw Invalid_input("mass_weighted_pca: l = " + std::to_string(l) + " columns asked of " + std::to_string(C.cols()) + " candidates");
+  if(l == 0) return Eigen::MatrixXd(C.rows(), 0);
+  const Eigen::MatrixXd E = leading_coefficients(C.transpose() * weights.asDiagonal() * C, l);
+  return C * E;
+}
+
+Eigen::MatrixXd projection_subspace(const Elastic_model& model, int group, int constraint_samples, double radius_multiplier,
+                                    int l)
+{
+  if(group < 0 || group >= model.number_of_groups()) throw Invalid_input("unknown element group " + std::to_string(group));
+  if(!(radius_multiplier > 1) || !std::isfinite(radius_multiplier))
+    throw Invalid_input("the constraint radius multiplier must be finite and above 1, not " + std::to_string(radius_multiplier));
+  const std::vector<Element>& elements = model.elements();
+  int first_row = -1, rows = 0;
+  std::vector<int> members;
+  for(int e = 0; e < model.number_of_elements(); ++e)
+    if(elements[std::size_t(e)].group == group)
+    {
+      if(first_row < 0) first_row = elements[std::size_t(e)].first_row;
+      rows += elements[std::size_t(e)].rows;
+      members.push_back(e);
+    }
+  if(members.empty()) throw Invalid_input("element group " + std::to_string(group) + " is empty");
+
+  const internal::Element_graph graph = internal::element_graph(model);
+  std::vector<double> distance;
+  const std::vector<int> samples = internal::farthest_point_samples(graph, constraint_samples, &distance);
+  double covering = 0;
+  for(double d : distance) covering = std::max(covering, d);
+  const Eigen::SparseMatrix<double, Eigen::RowMajor> W = sample_weights(model, samples, radius_multiplier * covering);
+  const int m = int(samples.size());
+
+  // Rest projections and element weights (mean of the vertex weights, renormalised).
+  const Positions& x = model.rest_positions();
+  const auto& S = model.selection_matrix();
+  Eigen::MatrixXd P(rows, 3);
+  std::vector<Eigen::Triplet<double>> candidates; // C is sparse: an element sees a few samples
+  Eigen::VectorXd measure(rows);
+  for(int e : members)
+  {
+    const Element& el = elements[std::size_t(e)];
+    const int r0 = el.first_row - first_row;
+    double value[9], out[9];
+    for(int r = 0; r < el.rows; ++r)
+    {
+      const Eigen::RowVector3d v = S.row(el.first_row + r) * x;
+      for(int c = 0; c < 3; ++c) value[3 * r + c] = v[c];
+    }
+    model.project(e, value, out);
+    Eigen::VectorXd omega = Eigen::VectorXd::Zero(m);
+    const std::vector<int> vertices = internal::element_vertices(model, e);
+    for(int v : vertices)
+      for(Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(W, v); it; ++it) omega[it.col()] += it.value();
+    omega /= omega.sum();
+    for(int r = 0; r < el.rows; ++r)
+    {
+      measure[r0 + r] = el.measure;
+      for(int c = 0; c < 3; ++c) P(r0 + r, c) = out[3 * r + c];
+      for(int j = 0; j < m; ++j)
+        if(omega[j] != 0)
+        {
+          for(int c = 0; c < 3; ++c)
+            if(out[3 * r + c] != 0) candidates.emplace_back(r0 + r, 4 * j + c, omega[j] * out[3 * r + c]);
+          candidates.emplace_back(r0 + r, 4 * j + 3, omega[j]);
+        }
+    }
+  }
+
+  // The rest projections' span, orthonormal for the measure-weighted inner product (rank
+  // revealed by column-pivoted QR: directions below 1e-10 of the largest are rounding).
+  const Eigen::VectorXd root = measure.cwiseSqrt();
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(root.asDiagonal() * P);
+  qr.setThreshold(1e-10);
+  const int z = int(qr.rank());
+  if(l < z) throw Invalid_input("l = " + std::to_string(l) + " is below the rank " + std::to_string(z) + " of the rest projections");
+  // The thin Q (rows x z) without forming the rows x rows one.
+  const Eigen::MatrixXd Q = qr.householderQ() * Eigen::MatrixXd::Identity(rows, z); // orthonormal in the scaled space
+  // The scaled candidates B = D^{1/2} C without the span of Q: B' = B - Q Q^T B, never formed
+  // densely (rows x 4m): its Gram matrix is B^T B - (Q^T B)^T (Q^T B), and its leading columns
+  // are B E - Q (Q^T B E).
+  Eigen::SparseMatrix<double> B(rows, 4 * m);
+  B.setFromTriplets(candidates.begin(), candidates.end());
+  B = root.asDiagonal() * B;
+  const Eigen::MatrixXd QtB = (Eigen::SparseMatrix<double>(B.transpose()) * Q).transpose(); // z x 4m
+  const Eigen::MatrixXd G = Eigen::MatrixXd(Eigen::SparseMatrix<double>(B.transpose()) * B) - QtB.transpose() * QtB;
+  if(l - z > 4 * m)
+    throw Invalid_input("l = " + std::to_string(l) + " exceeds the " + std::to_string(4 * m) + " candidate columns");
+  Eigen::MatrixXd V(rows, l);
+  const Eigen::VectorXd inverse_root = root.cwiseInverse();
+  V.leftCols(z) = inverse_root.asDiagonal() * Q;
+  if(l > z)
+  {
+    const Eigen::MatrixXd E = leading_coefficients(G, l - z);
+    const Eigen::MatrixXd BE = B * E;
+    V.rightCols(l - z) = inverse_root.asDiagonal() * (BE - Q * (QtB * E));
+  }
+  return V;
+}
+
+} // namespace Projective_dynamics
+} // namespace CGAL
