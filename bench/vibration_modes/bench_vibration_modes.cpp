@@ -8,7 +8,7 @@
 //     the mesh centred and divided by its coordinates' standard deviation), objective
 //     sum_i phi_i^T K phi_i + mu sum_j m_j |phi_ij|: the anchors' measurements are in these units.
 //     As there, modes need not be orthogonal to the constants (--kernel free), unless asked.
-//   bench_vibration_modes --shell MESH [--modes 50] [--mu-scale 4] [--bending 1e-3]
+//   bench_vibration_modes --shell MESH [--modes 50] [--mu-scale 4] [--bending 1e-3] [--trace 1]
 //     Compressed modes of the mesh as a shell (scaled to unit area), mu = mu-scale times the
 //     last ordinary mode's eigenvalue over sqrt(area).
 //   bench_vibration_modes --sizes MESH [--subdivisions 2]
@@ -90,6 +90,8 @@ void print_modes(const VM::Mode_problem& p, const VM::Modes& modes, bool to_kern
 
 double step_tolerance = VM::Compressed_mode_options().step_tolerance;
 double admm_tolerance = VM::Compressed_mode_options().admm_tolerance;
+bool trace = false;    // --trace 1: every ICCM iteration to stderr
+double fixed_mu = 0;  // --shell: --mu overrides --mu-scale
 
 int scalar(const std::string& path, double mu, int k, bool free, bool random)
 {
@@ -133,16 +135,21 @@ int shell(const std::string& path, int k, double mu_scale, double bending)
   const VM::Modes ordinary = VM::lowest_vibration_modes(p, k);
   const double t_ordinary = seconds_since(t0);
   std::fprintf(stderr, "assembly %.1f s, %d ordinary modes %.1f s\n", t_assembly, k, t_ordinary);
-  const double mu = mu_scale * ordinary.energies[k - 1]; // area 1: sqrt(area) = 1
+  const double mu = fixed_mu > 0 ? fixed_mu : mu_scale * ordinary.energies[k - 1]; // area 1: sqrt(area) = 1
   std::printf("shell %s: %ld vertices, k_b %g, mu %g (%g x lambda_%d), %d modes\n", path.c_str(),
               long(num_vertices(mesh)), bending, mu, mu_scale, k, k);
   t0 = std::chrono::steady_clock::now();
   VM::Compressed_mode_options o;
   o.sparsity_weight = mu;
+  o.step_tolerance = step_tolerance;
+  o.admm_tolerance = admm_tolerance;
   int last_mode = -1;
   o.progress = [&](const VM::Compressed_mode_progress& s) {
     if(s.mode != last_mode)
       std::fprintf(stderr, "mode %d of %d started at %.1f s\n", s.mode + 1, s.count, seconds_since(t0));
+    if(trace)
+      std::fprintf(stderr, "  ICCM %d: ADMM %d, objective %.8g, support %.1f %%, %.2f s\n", s.outer_iteration,
+                   s.inner_iterations, s.objective, 100 * s.support_fraction, seconds_since(t0));
     last_mode = s.mode;
     return true;
   };
@@ -190,6 +197,8 @@ int main(int argc, char** argv)
   {
     step_tolerance = std::stod(get("--step-tolerance", std::to_string(step_tolerance)));
     admm_tolerance = std::stod(get("--admm-tolerance", std::to_string(admm_tolerance)));
+    trace = get("--trace", "0") == "1";
+    if(a.count("--shell")) fixed_mu = std::stod(get("--mu", "0"));
     if(a.count("--scalar"))
       return scalar(a["--scalar"], std::stod(get("--mu", "0.1124")), std::stoi(get("--modes", "10")),
                     get("--kernel", "free") == "free", get("--start", "lowest") == "random");

@@ -76,6 +76,8 @@ int render_command(const Arguments&);
 int streamlines_command(const Arguments&);
 int export_command(const Arguments&);
 int serve_command(const Arguments&);
+// Vibration modes (commands_vibration_modes.cpp).
+int modes_command(const Arguments&);
 // n-direction fields (commands_n_fields.cpp); basis, design, export and render hand over to the
 // n-field forms when `wants_n_field` (a `--n` option) or, for design, `constraint_file_has_n`.
 int smoothest_command(const Arguments&);

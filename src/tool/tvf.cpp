@@ -51,6 +51,9 @@ const std::vector<Command_system>& systems()
        smoothest_command},
       {"singularities", "the singular vertices of an n-field with their indices (.sing), Poincare-Hopf checked",
        singularities_command}}},
+    {"Vibration modes and compressed vibration modes (Chapter 5, CGAL Vibration_modes)",
+     {{"modes", "the lowest vibration modes of a shell or a Laplacian, or compressed (local) modes; .vtp output",
+       modes_command}}},
     {"The viewer (every system)",
      {{"serve", "start the interactive viewer: a local web server and page (field editing today)", serve_command}}}};
   return list;

@@ -19,6 +19,10 @@ namespace Vibration_modes {
 
 namespace {
 
+// Each ICCM step of the L1-constrained variant lowers the ball to this fraction of the
+// current iterate's |u|_{1,M}, until the budget is reached.
+constexpr double budget_continuation = 0.8;
+
 // The free part of a vector given over the free or over all unknowns.
 Eigen::VectorXd free_part(const Mode_problem& p, const Eigen::VectorXd& u)
 {
@@ -78,8 +82,13 @@ double compressed_objective(const Mode_problem& p, const Eigen::VectorXd& u_in, 
 Modes compressed_modes(const Mode_problem& p, int count, const Compressed_mode_options& options)
 {
   const double mu = options.sparsity_weight;
+  const double budget = std::isinf(options.l1_budget) && options.l1_budget > 0 ? 0 : options.l1_budget; // 0: none
   if(!(mu >= 0) || !std::isfinite(mu))
     throw Invalid_input("compressed modes: the sparsity weight mu must be finite and >= 0 (got " + std::to_string(mu) + ")");
+  if(!(options.l1_budget > 0))
+    throw Invalid_input("compressed modes: the L1 budget must be > 0 (got " + std::to_string(options.l1_budget) + ")");
+  if(budget > 0 && mu > 0)
+    throw Invalid_input("compressed modes: give either a sparsity weight mu or an L1 budget, not both");
   p.check();
   if(count > p.H.rows() - (options.orthogonal_to_kernel ? p.kernel.cols() : 0))
     throw Invalid_input("compressed modes: " + std::to_string(count) + " modes asked for, but only " +
@@ -109,6 +118,7 @@ Modes compressed_modes(const Mode_problem& p, int count, const Compressed_mode_o
   // scheduler).
   Model_reduction::internal::One_blas_thread one_blas_thread;
   internal::Constrained_group_lasso admm(p, mu, options.admm_tolerance);
+  if(budget > 0) admm.set_l1_budget(budget);
   if(options.orthogonal_to_kernel) admm.set_fixed(m_orthonormal(p.kernel, p.mass));
   Modes modes;
   modes.kernel_dimension = int(p.kernel.cols());
@@ -133,6 +143,16 @@ Modes compressed_modes(const Mode_problem& p, int count, const Compressed_mode_o
     {
       ++outer;
       const double tolerance = options.exact_convex_steps ? options.admm_tolerance : std::min(1e-2, 0.1 * step);
+      // The budget is approached from the start's own |c|_{1,M}: the plane c^T M u = 1
+      // meets the ball of radius beta only if beta max_v |c_v| >= 1, which a spread-out
+      // start (an ordinary mode) may miss; a ball at 0.8 |c|_{1,M} keeps meeting it as long
+      // as c is not flat (max_v |c_v| >= 1 / |c|_{1,M} always), and c shrinks with it.
+      double level = budget;
+      if(budget > 0)
+      {
+        level = std::max(budget, budget_continuation * mass_weighted_l1(p, c));
+        admm.set_l1_budget(level);
+      }
       inner += admm.solve_on_plane(c, options.max_inner_iterations, tolerance);
       const Eigen::VectorXd& u = admm.u();
       const double norm = admm.m_norm(u); // >= 1: u lies on the tangent plane c^T M u = 1
@@ -140,16 +160,23 @@ Modes compressed_modes(const Mode_problem& p, int count, const Compressed_mode_o
       const double f_next = compressed_objective(p, next, mu);
       step = admm.m_norm(next - c);
       done = admm.converged() && f - f_next <= options.objective_tolerance * std::abs(f_next) &&
-             step <= options.step_tolerance;
+             step <= options.step_tolerance && level == budget;
       admm.rescale(1 / norm);
       c = next;
       f = f_next;
-      if(options.progress && !options.progress({i, count, outer, inner, f}))
+      if(options.progress && !options.progress({i, count, outer, inner, f, support_fraction(p, admm.z())}))
         throw Cancelled("compressed modes: cancelled at mode " + std::to_string(i + 1) + " of " + std::to_string(count));
     }
     // The mode: the sparse iterate (exact zeros) if it is feasible on its support.
     const Eigen::VectorXd sparse = admm.feasible_sparse_iterate();
     if(sparse.size() > 0 && admm.m_norm(admm.project_out_fixed(sparse) - sparse) < 1e-10) c = sparse;
+    // The budget holds up to the ADMM's tolerance (the unit iterate is the ball's point
+    // rescaled by its M-norm, 1 within the residuals); far beyond it, the plane never met
+    // the ball: no unit vector within the budget satisfies this mode's constraints.
+    if(budget > 0 && !(mass_weighted_l1(p, c) <= budget * (1 + 1e-3)))
+      throw Numerical_failure("compressed modes: the L1 budget " + std::to_string(budget) + " is too small for mode " +
+                              std::to_string(i + 1) + " (its best unit vector has |u|_{1,M} = " +
+                              std::to_string(mass_weighted_l1(p, c)) + ")");
     found.col(i) = c;
     admm.add_fixed(c);
     modes.energies[i] = c.dot(p.H * c);

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace CGAL {
 namespace Vibration_modes {
@@ -120,14 +121,7 @@ int Constrained_group_lasso::solve_on_plane(const Eigen::VectorXd& c, int max_it
     const Eigen::VectorXd relaxed = over_relaxation * u_ + (1 - over_relaxation) * z_;
     const Eigen::VectorXd x = relaxed + w_;
     const Eigen::VectorXd z_old = z_;
-    const double kappa = mu_ / rho_;
-    for(Eigen::Index v = 0; v < n; v += g)
-    {
-      double len2 = 0;
-      for(int c = 0; c < g; ++c) len2 += x[v + c] * x[v + c];
-      const double len = std::sqrt(len2), scale = len > kappa ? 1 - kappa / len : 0.0;
-      for(int c = 0; c < g; ++c) z_[v + c] = scale * x[v + c];
-    }
+    shrink(x);
     w_ = x - z_;
     // Residuals relative to their scales: the iterates, and the gradient of the energy.
     const double primal = m_norm(u_ - z_) / std::max(m_norm(u_), m_norm(z_));
@@ -149,6 +143,46 @@ int Constrained_group_lasso::solve_on_plane(const Eigen::VectorXd& c, int max_it
     }
   }
   return it;
+}
+
+void Constrained_group_lasso::shrink(const Eigen::VectorXd& x)
+{
+  const int g = p_.group_size;
+  const Eigen::Index groups = x.size() / g;
+  Eigen::VectorXd length(groups);
+  for(Eigen::Index v = 0; v < groups; ++v) length[v] = x.segment(g * v, g).norm();
+  // Every group shrinks by the same length t: mu / rho for the penalty; for the budget, the
+  // t at which sum_v m_v max(|x_v| - t, 0) falls to the budget (the M-weighted projection
+  // onto the ball: the masses cancel in each group's problem, so t is common).
+  double t = mu_ / rho_;
+  if(budget_ > 0)
+  {
+    double total = 0;
+    for(Eigen::Index v = 0; v < groups; ++v) total += p_.mass[g * v] * length[v];
+    t = 0;
+    if(total > budget_)
+    {
+      std::vector<Eigen::Index> order(static_cast<std::size_t>(groups));
+      for(Eigen::Index v = 0; v < groups; ++v) order[std::size_t(v)] = v;
+      std::sort(order.begin(), order.end(), [&](Eigen::Index a, Eigen::Index b) { return length[a] > length[b]; });
+      // With the k longest groups active: t = (sum m |x| - budget) / sum m over them, valid
+      // while the next group is no longer than t.
+      double mass_sum = 0, weighted_sum = 0;
+      for(std::size_t k = 0; k < order.size(); ++k)
+      {
+        const double m = p_.mass[g * order[k]];
+        mass_sum += m;
+        weighted_sum += m * length[order[k]];
+        t = (weighted_sum - budget_) / mass_sum;
+        if(k + 1 == order.size() || length[order[k + 1]] <= t) break;
+      }
+    }
+  }
+  for(Eigen::Index v = 0; v < groups; ++v)
+  {
+    const double scale = length[v] > t ? 1 - t / length[v] : 0.0;
+    z_.segment(g * v, g) = scale * x.segment(g * v, g);
+  }
 }
 
 Eigen::VectorXd Constrained_group_lasso::feasible_sparse_iterate() const

@@ -27,6 +27,9 @@ class Constrained_group_lasso
 {
 public:
   Constrained_group_lasso(const Mode_problem& problem, double mu, double tolerance);
+  /// The L1-constrained problem instead: min u^T H u with sum_v m_v |u_v| <= budget (the
+  /// z-step projects onto that ball; mu is not used).
+  void set_l1_budget(double budget) { budget_ = budget; }
 
   /// The fixed directions, M-orthonormal.
   void set_fixed(const Eigen::MatrixXd& Q);
@@ -45,6 +48,8 @@ public:
   bool converged() const { return converged_; }
   /// The last u-step: feasible (on the plane, M-orthogonal to the fixed directions).
   const Eigen::VectorXd& u() const { return u_; }
+  /// The sparse iterate of the last z-step (exact zeros off its support).
+  const Eigen::VectorXd& z() const { return z_; }
   /// Scales the state (u, z, w) for the next plane after the iterate is normalised.
   void rescale(double s);
   /// The sparse iterate z made exactly feasible without leaving its support (the smallest
@@ -56,7 +61,10 @@ private:
   void factor(double rho);
 
   const Mode_problem& p_;
-  double mu_, tolerance_, rho_ = 0, energy_scale_ = 1;
+  // The z-step: group soft threshold at mu / rho, or projection onto the L1 ball.
+  void shrink(const Eigen::VectorXd& x);
+
+  double mu_, tolerance_, rho_ = 0, energy_scale_ = 1, budget_ = 0;
   Model_reduction::Sparse_spd_solver A_;
   Eigen::MatrixXd F_, MF_, WF_; // fixed directions, M F, A^-1 M F
   Eigen::VectorXd u_, z_, w_;

@@ -6,6 +6,7 @@
 // support shrinks as mu grows, modes rotate with the shell, and the scalar problem of a
 // Laplacian (group size 1) works as the vector one.
 
+#include "expect_reason.h"
 #include "shell_test_meshes.h"
 
 #include <CGAL/Vibration_modes/compressed_modes.h>
@@ -264,4 +265,64 @@ TEST(CompressedModes, RefuseBadOptionsAndCancel)
   options.progress = [](const VM::Compressed_mode_progress& s) { return s.mode == 0; };
   try { VM::compressed_modes(p, 3, options); ADD_FAILURE(); }
   catch(const VM::Cancelled& e) { EXPECT_NE(std::string(e.what()).find("cancelled at mode 2 of 3"), std::string::npos); }
+}
+
+TEST(CompressedModes, L1BudgetVariant)
+{
+  // min u^T H u on |u|_{1,M} <= beta (thesis 5.6).  Truth: a unit vector has |u|_{1,M} at most
+  // sqrt(total mass) (Cauchy-Schwarz), so that budget leaves the eigenvectors; smaller budgets
+  // are met (and active: the eigenvectors exceed them), every mode stays feasible, the first
+  // mode's energy is at least the first eigenvalue and grows as the budget shrinks, and the
+  // modes get sparser.
+  const VM::Mode_problem p = shell_problem(lumpy_sphere(1));
+  const VM::Modes ordinary = VM::lowest_vibration_modes(p, 8);
+  int k = 2;
+  while(ordinary.energies[k] < 1.05 * ordinary.energies[k - 1]) ++k;
+  ASSERT_LT(k, 8);
+  const double total_mass = p.mass.sum() / p.group_size;
+  VM::Compressed_mode_options options;
+  options.l1_budget = std::sqrt(total_mass) * (1 + 1e-9);
+  options.admm_tolerance = 1e-9;
+  const VM::Modes free = VM::compressed_modes(p, k, options);
+  EXPECT_LT(largest_angle_sine(free.vectors, ordinary.vectors.leftCols(k), p.mass), 1e-5);
+
+  double previous_energy = 0, previous_support = 1;
+  for(double fraction : {0.6, 0.45, 0.3})
+  {
+    SCOPED_TRACE("budget " + std::to_string(fraction) + " sqrt(area)");
+    options.l1_budget = fraction * std::sqrt(total_mass);
+    const VM::Modes modes = VM::compressed_modes(p, k, options);
+    const Eigen::MatrixXd G = modes.vectors.transpose() * p.mass.asDiagonal() * modes.vectors;
+    EXPECT_LT((G - Eigen::MatrixXd::Identity(k, k)).cwiseAbs().maxCoeff(), 1e-8);
+    EXPECT_LT((p.kernel.transpose() * p.mass.asDiagonal() * modes.vectors).cwiseAbs().maxCoeff(),
+              1e-8 * p.kernel.cwiseAbs().maxCoeff());
+    for(int i = 0; i < k; ++i)
+    {
+      // Met to the ADMM's tolerance, and active.
+      const double l1 = VM::mass_weighted_l1(p, modes.vectors.col(i));
+      EXPECT_LE(l1, options.l1_budget * (1 + 1e-6)) << "mode " << i;
+      EXPECT_GE(l1, options.l1_budget * (1 - 1e-3)) << "mode " << i;
+      EXPECT_NEAR(modes.objectives[i], modes.energies[i], 1e-12 * modes.energies[i]);
+    }
+    EXPECT_GE(modes.energies[0], ordinary.energies[0] * (1 - 1e-9));
+    EXPECT_GE(modes.energies[0], previous_energy * (1 - 1e-6));
+    EXPECT_LE(modes.support_fractions[0], previous_support);
+    previous_energy = modes.energies[0];
+    previous_support = modes.support_fractions[0];
+  }
+  EXPECT_LT(previous_support, 0.9);
+
+  VM::Compressed_mode_options bad;
+  bad.l1_budget = 0;
+  EXPECT_THROW_REASON(VM::compressed_modes(p, 1, bad), VM::Invalid_input, "the L1 budget must be > 0 (got 0");
+  bad.l1_budget = std::nan("");
+  EXPECT_THROW_REASON(VM::compressed_modes(p, 1, bad), VM::Invalid_input, "the L1 budget must be > 0");
+  bad.l1_budget = 0.5;
+  bad.sparsity_weight = 1;
+  EXPECT_THROW_REASON(VM::compressed_modes(p, 1, bad), VM::Invalid_input, "either a sparsity weight mu or an L1 budget");
+  // A unit vector needs |u|_{1,M} >= sqrt(smallest vertex mass): a budget far below is unmet.
+  bad.sparsity_weight = 0;
+  bad.l1_budget = 1e-3 * std::sqrt(p.mass.minCoeff());
+  bad.max_outer_iterations = 20;
+  EXPECT_THROW_REASON(VM::compressed_modes(p, 1, bad), VM::Numerical_failure, "is too small for mode 1");
 }

@@ -10,6 +10,12 @@
 #include <CGAL/Vibration_modes/errors.h>
 #include <CGAL/Vibration_modes/lowest_vibration_modes.h>
 #include <CGAL/Vibration_modes/vibration_modes.h>
+#include <CGAL/Vibration_modes/mode_export.h>
+
+#include "expect_reason.h"
+#include "scratch_path.h"
+
+#include <fstream>
 
 #include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
@@ -182,4 +188,44 @@ TEST(VibrationModes, MeshFrontTakesNamedParametersAndFillsPropertyMaps)
   EXPECT_EQ(u[Vertex_index(40)], Vector_3(0, 0, 0));
   try { VM::copy_mode_to_vertex_map(mesh, modes, 5, u); ADD_FAILURE(); }
   catch(const VM::Invalid_input& e) { EXPECT_NE(std::string(e.what()).find("mode 5 asked for, 5 computed"), std::string::npos); }
+}
+
+TEST(ModeExport, EveryModeIsAPointArrayOfTheMeshReadBackExactly)
+{
+  // Written through the mesh front, read back by the VTK reader: the points are the mesh's
+  // vertices in index order, the polygons its faces, mode_i the i-th column to the last bit,
+  // and mode_support counts the modes that are non-zero at each vertex (pins: none).
+  Mesh mesh = lumpy_sphere();
+  const VM::Modes modes = VM::vibration_modes(mesh, 4, VM::parameters::pinned_vertices(std::vector<Vertex_index>{Vertex_index(5)}));
+  const std::string path = scratch_path("modes.vtp");
+  VM::write_modes_vtp(path, mesh, modes);
+  std::ifstream in(path);
+  const CGAL::Model_reduction::Vtk_polydata data = CGAL::Model_reduction::read_vtk_polydata(in);
+  ASSERT_EQ(data.points.size(), num_vertices(mesh));
+  for(Vertex_index v : vertices(mesh))
+    for(int c = 0; c < 3; ++c) EXPECT_EQ(data.points[std::size_t(v)][std::size_t(c)], mesh.point(v)[c]);
+  ASSERT_EQ(data.polygons.size(), num_faces(mesh));
+  for(int i = 0; i < 4; ++i)
+  {
+    const auto* a = data.find_point_array("mode_" + std::to_string(i + 1));
+    ASSERT_NE(a, nullptr) << "mode " << i + 1;
+    ASSERT_EQ(a->components, 3);
+    for(Eigen::Index j = 0; j < modes.vectors.rows(); ++j) ASSERT_EQ(a->values[std::size_t(j)], modes.vectors(j, i));
+  }
+  const auto* support = data.find_point_array("mode_support");
+  ASSERT_NE(support, nullptr);
+  for(Vertex_index v : vertices(mesh)) EXPECT_EQ(support->values[std::size_t(v)], v == Vertex_index(5) ? 0 : 4);
+  const Eigen::VectorXd x = DS::stacked_positions(mesh);
+  const Eigen::VectorXd moved = VM::displaced_positions(x, modes, 2, 0.5);
+  EXPECT_EQ((moved - (x + 0.5 * modes.vectors.col(2))).cwiseAbs().maxCoeff(), 0);
+
+  VM::Modes scalar;
+  scalar.vectors = Eigen::MatrixXd::Ones(x.size() / 3, 1);
+  EXPECT_THROW_REASON(VM::displaced_positions(x, scalar, 0, 1), VM::Invalid_input, "a scalar mode does not move the vertices");
+  EXPECT_THROW_REASON(VM::displaced_positions(x, modes, 4, 1), VM::Invalid_input, "mode 4 asked for, 4 modes exist");
+  VM::Modes wrong;
+  wrong.vectors = Eigen::MatrixXd::Ones(x.size() + 1, 1);
+  EXPECT_THROW_REASON(VM::write_modes_vtp(path, mesh, wrong), VM::Invalid_input, "(1 or 3 per vertex expected)");
+  EXPECT_THROW_REASON(VM::write_modes_vtp("/nonexistent-folder/modes.vtp", mesh, modes), VM::Invalid_input,
+                      "cannot be opened for writing");
 }

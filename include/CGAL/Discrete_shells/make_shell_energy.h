@@ -10,6 +10,7 @@
 /// vectors the energy works with (three entries per vertex, in the vertex index map's order).
 
 #include <CGAL/Discrete_shells/Shell_energy.h>
+#include <CGAL/Model_reduction/mesh_arrays.h>
 #include <CGAL/Discrete_shells/errors.h>
 #include <CGAL/Discrete_shells/named_function_parameters.h>
 
@@ -27,18 +28,10 @@ namespace Discrete_shells {
 template <class TriangleMesh, class NamedParameters = parameters::Default_named_parameters>
 Eigen::VectorXd stacked_positions(const TriangleMesh& mesh, const NamedParameters& np = parameters::default_values())
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, mesh));
-  const auto vim = CGAL::get_initialized_vertex_index_map(mesh, np);
-  Eigen::VectorXd x(3 * Eigen::Index(num_vertices(mesh)));
-  for(auto v : vertices(mesh))
-  {
-    const auto& p = get(vpm, v);
-    const Eigen::Index i = 3 * Eigen::Index(get(vim, v));
-    x[i] = CGAL::to_double(p.x()), x[i + 1] = CGAL::to_double(p.y()), x[i + 2] = CGAL::to_double(p.z());
-  }
+  const std::vector<std::array<double, 3>> points = Model_reduction::mesh_points(mesh, np);
+  Eigen::VectorXd x(3 * Eigen::Index(points.size()));
+  for(std::size_t v = 0; v < points.size(); ++v)
+    for(int c = 0; c < 3; ++c) x[3 * Eigen::Index(v) + c] = points[v][std::size_t(c)];
   return x;
 }
 
@@ -48,24 +41,7 @@ template <class TriangleMesh, class NamedParameters = parameters::Default_named_
 std::vector<Shell_energy::Triangle> mesh_triangles(const TriangleMesh& mesh,
                                                    const NamedParameters& np = parameters::default_values())
 {
-  const auto vim = CGAL::get_initialized_vertex_index_map(mesh, np);
-  std::vector<Shell_energy::Triangle> triangles;
-  triangles.reserve(num_faces(mesh));
-  for(auto f : faces(mesh))
-  {
-    Shell_energy::Triangle t;
-    int k = 0;
-    for(auto v : vertices_around_face(halfedge(f, mesh), mesh))
-    {
-      if(k < 3) t[k] = int(get(vim, v));
-      ++k;
-    }
-    if(k != 3)
-      throw Invalid_mesh(Mesh_defect::non_triangle_face,
-                         "face " + std::to_string(triangles.size()) + " has " + std::to_string(k) + " vertices, not 3");
-    triangles.push_back(t);
-  }
-  return triangles;
+  return Model_reduction::mesh_triangles(mesh, np);
 }
 
 /// The stiffnesses given as named parameters (defaults 1).

@@ -15,6 +15,7 @@
 /// PD::copy_positions_to_mesh(sim.positions(), mesh);
 /// \endcode
 
+#include <CGAL/Model_reduction/mesh_arrays.h>
 #include <CGAL/Projective_dynamics/errors.h>
 #include <CGAL/Projective_dynamics/make_models.h>
 #include <CGAL/Projective_dynamics/named_function_parameters.h>
@@ -35,36 +36,8 @@ template <class TriangleMesh, class NamedParameters = parameters::Default_named_
 void mesh_to_arrays(const TriangleMesh& mesh, std::vector<Point>& points, std::vector<Triangle>& triangles,
                     const NamedParameters& np = parameters::default_values())
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, mesh));
-  const auto vim = CGAL::get_initialized_vertex_index_map(mesh, np);
-  points.assign(num_vertices(mesh), Point{});
-  for(auto v : vertices(mesh))
-  {
-    const auto& p = get(vpm, v);
-    const std::size_t i = std::size_t(get(vim, v));
-    if(i >= points.size())
-      throw Invalid_mesh(Mesh_defect::garbage, "vertex index " + std::to_string(i) + " outside [0, " +
-                                                   std::to_string(points.size()) + "): removed elements still stored?");
-    points[i] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
-  }
-  triangles.clear();
-  for(auto f : faces(mesh))
-  {
-    Triangle t;
-    int k = 0;
-    for(auto v : vertices_around_face(halfedge(f, mesh), mesh))
-    {
-      if(k < 3) t[k] = int(get(vim, v));
-      ++k;
-    }
-    if(k != 3)
-      throw Invalid_mesh(Mesh_defect::non_triangle_face,
-                         "face " + std::to_string(triangles.size()) + " has " + std::to_string(k) + " vertices, not 3");
-    triangles.push_back(t);
-  }
+  points = Model_reduction::mesh_points(mesh, np);
+  triangles = Model_reduction::mesh_triangles(mesh, np);
 }
 
 /// `make_shell_model` of the mesh's vertices and faces (its named parameters, and

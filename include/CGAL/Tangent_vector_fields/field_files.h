@@ -13,6 +13,7 @@
 /// Every number is written with 17 significant digits, so a write followed by a
 /// read gives back the same doubles.
 
+#include <CGAL/Model_reduction/Vtk_polydata.h>
 #include <CGAL/Tangent_vector_fields/Streamline_tracer.h>
 
 #include <array>
@@ -24,45 +25,10 @@
 namespace CGAL {
 namespace Tangent_vector_fields {
 
-/// \brief The part of a VTK PolyData data set this package writes and reads: points,
-/// polygons, polylines, and named arrays on points and on cells.
-///
-/// VTK numbers cells lines first, then polygons: a cell array has one tuple per line
-/// followed by one per polygon.
-struct Vtk_polydata
-{
-  struct Array
-  {
-    std::string name;
-    int components = 1;
-    std::vector<double> values; ///< `components` values per tuple
-    std::size_t number_of_tuples() const { return components > 0 ? values.size() / components : 0; }
-  };
-
-  std::vector<std::array<double, 3>> points;
-  std::vector<std::vector<int>> lines;    ///< polylines, as point indices
-  std::vector<std::vector<int>> polygons; ///< polygons, as point indices
-  std::vector<Array> point_data;
-  std::vector<Array> cell_data;
-
-  std::size_t number_of_cells() const { return lines.size() + polygons.size(); }
-  /// The cell (or point) array called `name`, or null.
-  const Array* find_cell_array(const std::string& name) const;
-  const Array* find_point_array(const std::string& name) const;
-};
-
-/// Writes `data` as a VTK XML PolyData file (`<VTKFile type="PolyData">`, ASCII data
-/// arrays: `Float64` for points and arrays, `Int64` for connectivity and offsets).
-/// The first 3-component cell array is marked as the cells' active vectors.
-/// \throws Invalid_input if an index or an array size does not fit, or the stream fails.
-void write_vtk_polydata(std::ostream& out, const Vtk_polydata& data);
-
-/// Reads a VTK XML PolyData file with ASCII data arrays (`format="ascii"`; the
-/// `binary` and `appended` formats are refused): points, lines, polygons, point and
-/// cell data arrays of any numeric type (read as `double`).  Vertices and strips are
-/// refused.
-/// \throws Invalid_input for anything else or a malformed file.
-Vtk_polydata read_vtk_polydata(std::istream& in);
+// VTK PolyData, shared by every package's exports (Model_reduction/Vtk_polydata.h).
+using Model_reduction::Vtk_polydata;
+using Model_reduction::read_vtk_polydata;
+using Model_reduction::write_vtk_polydata;
 
 /// A mesh with face vector arrays, ready for `write_vtk_polydata`: the triangles are
 /// the polygons, each field a 3-component cell array named after it.

@@ -16,6 +16,7 @@
 #include <CGAL/Vibration_modes/Modes.h>
 
 #include <functional>
+#include <limits>
 
 namespace CGAL {
 namespace Vibration_modes {
@@ -27,6 +28,7 @@ struct Compressed_mode_progress
   int outer_iteration = 0;   ///< ICCM iterations of this mode so far
   int inner_iterations = 0;  ///< ADMM iterations of this mode so far
   double objective = 0;      ///< at the current unit iterate
+  double support_fraction = 1; ///< vertices where the sparse iterate is nonzero, over all
 };
 
 /// Where ICCM starts each mode (the problem is not convex: the start picks the local minimum).
@@ -40,6 +42,11 @@ struct Compressed_mode_options
 {
   /// `mu >= 0`, in units of `H`'s eigenvalues per `|u|_{1,M}` (0: the ordinary modes).
   double sparsity_weight = 0;
+  /// The L1-constrained variant (when finite): each mode minimises `u^T H u` with
+  /// `|u|_{1,M} <= l1_budget` (> 0; `sparsity_weight` must then be 0).  A unit vector has
+  /// `|u|_{1,M} <= sqrt(total mass)` (Cauchy-Schwarz), so budgets from that value up give the
+  /// ordinary modes, and smaller ones more local modes; the objective reported is the energy.
+  double l1_budget = std::numeric_limits<double>::infinity();
   /// ICCM stops when the objective decreased by less than this relative amount and the
   /// unit iterate moved by less than `step_tolerance` (in the M-norm) in one iteration.
   double objective_tolerance = 1e-7;
@@ -67,9 +74,11 @@ struct Compressed_mode_options
 };
 
 /// `count` compressed modes of `problem`, started from its ordinary modes.
-/// \throws Invalid_input for `mu < 0` or not finite, `count < 1`, or more modes than the
+/// \throws Invalid_input for `mu < 0` or not finite, an L1 budget that is not finite, is
+///         <= 0 while asked for, or comes with `mu > 0`, `count < 1`, or more modes than the
 ///         space outside the kernel holds; Cancelled when `progress` returns false;
-///         Numerical_failure if a factorisation fails.
+///         Numerical_failure if a factorisation fails or no unit vector of the budget meets
+///         a mode's constraints (the budget is too small for it).
 Modes compressed_modes(const Mode_problem& problem, int count, const Compressed_mode_options& options = {});
 
 /// The objective `u^T H u + mu sum_v m_v |u_v|` of a vector over the free unknowns.

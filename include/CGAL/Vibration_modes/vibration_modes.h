@@ -89,6 +89,7 @@ Modes vibration_modes(const TriangleMesh& mesh, int count, const NamedParameters
 /// `count` compressed vibration modes of `mesh` as a discrete shell (SPEC 13.3).
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{sparsity_weight} `mu >= 0`; `double`; default 0 (the ordinary modes) \cgalParamNEnd
+///   \cgalParamNBegin{l1_budget} instead of `sparsity_weight`: `|u|_{1,M} <= l1_budget` (> 0); `double`; default infinity (none) \cgalParamNEnd
 ///   \cgalParamNBegin{progress_callback} `bool(const Compressed_mode_progress&)`, false cancels \cgalParamNEnd
 ///   \cgalParamNBegin{...} and those of `vibration_modes` \cgalParamNEnd
 /// \cgalNamedParamsEnd
@@ -101,6 +102,7 @@ Modes compressed_vibration_modes(const TriangleMesh& mesh, int count,
   using parameters::get_parameter;
   Compressed_mode_options o;
   o.sparsity_weight = choose_parameter(get_parameter(np, internal_np::sparsity_weight), 0.0);
+  o.l1_budget = choose_parameter(get_parameter(np, internal_np::l1_budget), o.l1_budget);
   o.eigensolver = internal::eigensolver_options(np);
   if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::progress_callback_t>::value)
     o.progress = get_parameter(np, internal_np::progress_callback);

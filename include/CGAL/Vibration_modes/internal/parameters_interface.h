@@ -13,5 +13,7 @@ MR_add_named_parameter(pinned_vertices_t, pinned_vertices, pinned_vertices)
 // Compressed modes: the sparsity weight mu
 MR_add_named_parameter(sparsity_weight_t, sparsity_weight, sparsity_weight)
 
+MR_add_named_parameter(l1_budget_t, l1_budget, l1_budget)
+
 // Segmentation by modes: a vertex whose winning mode is below this fraction of its peak is unassigned
 MR_add_named_parameter(segmentation_threshold_t, segmentation_threshold, segmentation_threshold)
