@@ -7,6 +7,8 @@
 #include <CGAL/Projective_dynamics/errors.h>
 #include <CGAL/Projective_dynamics/projections.h>
 
+#include "element_indices.h"
+
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 
@@ -56,17 +58,7 @@ int Elastic_model::new_group(Element_type type, double stiffness)
 
 void Elastic_model::check_indices(const int* v, int count, const char* kind, std::size_t index) const
 {
-  const int n = number_of_vertices();
-  for(int i = 0; i < count; ++i)
-  {
-    if(v[i] < 0 || v[i] >= n)
-      throw Invalid_mesh(Mesh_defect::invalid_index, std::string(kind) + " " + std::to_string(index) + " has vertex index " +
-                                                         std::to_string(v[i]) + " outside [0, " + std::to_string(n) + ")");
-    for(int j = 0; j < i; ++j)
-      if(v[i] == v[j])
-        throw Invalid_mesh(Mesh_defect::invalid_index,
-                           std::string(kind) + " " + std::to_string(index) + " repeats vertex " + std::to_string(v[i]));
-  }
+  internal::check_element_indices(v, count, number_of_vertices(), kind, index);
 }
 
 int Elastic_model::add_springs(const std::vector<Edge>& edges, double stiffness, double rmin, double rmax)

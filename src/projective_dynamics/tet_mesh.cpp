@@ -7,6 +7,8 @@
 #include <CGAL/Projective_dynamics/errors.h>
 #include <CGAL/Projective_dynamics/mesh_generators.h>
 
+#include "element_indices.h"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -41,16 +43,7 @@ void check_tet_mesh(const Tet_mesh& mesh)
       if(!std::isfinite(c))
         throw Invalid_mesh(Mesh_defect::non_finite_coordinate, "vertex " + std::to_string(v) + " has a non-finite coordinate");
   auto check_indices = [n](const int* v, int count, const char* kind, std::size_t index) {
-    for(int i = 0; i < count; ++i)
-    {
-      if(v[i] < 0 || v[i] >= n)
-        throw Invalid_mesh(Mesh_defect::invalid_index, std::string(kind) + " " + std::to_string(index) + " has vertex index " +
-                                                           std::to_string(v[i]) + " outside [0, " + std::to_string(n) + ")");
-      for(int j = 0; j < i; ++j)
-        if(v[i] == v[j])
-          throw Invalid_mesh(Mesh_defect::invalid_index,
-                             std::string(kind) + " " + std::to_string(index) + " repeats vertex " + std::to_string(v[i]));
-    }
+    internal::check_element_indices(v, count, n, kind, index);
   };
   for(std::size_t t = 0; t < mesh.tetrahedra.size(); ++t)
   {

@@ -326,3 +326,38 @@ TEST(CompressedModes, L1BudgetVariant)
   bad.max_outer_iterations = 20;
   EXPECT_THROW_REASON(VM::compressed_modes(p, 1, bad), VM::Numerical_failure, "is too small for mode 1");
 }
+
+TEST(CompressedModes, TwoResolutionsOfOneShapeAgree)
+{
+  // An ellipsoid (no repeated eigenvalues) at three resolutions, the scalar problem with one
+  // mu in absolute units: the discretisations converge, so the ordinary eigenvalues and the
+  // compressed modes' objectives of the two finer meshes agree better than those of the two
+  // coarser ones, and the finer pair to a few per cent.
+  auto ellipsoid = [](int levels) {
+    const Mesh mesh = make_icosphere(levels);
+    Eigen::VectorXd x = DS::stacked_positions(mesh);
+    for(Eigen::Index v = 0; v < x.size(); v += 3) x[v + 1] *= 1.4, x[v + 2] *= 1.9;
+    return VM::laplacian_mode_problem(x, triangles_of(mesh));
+  };
+  const int k = 3;
+  std::vector<Eigen::VectorXd> eigenvalues, objectives;
+  double mu = 0;
+  for(int levels : {4, 3, 2})
+  {
+    const VM::Mode_problem p = ellipsoid(levels);
+    const VM::Modes ordinary = VM::lowest_vibration_modes(p, k);
+    if(mu == 0) mu = 4 * typical_mu(p, ordinary, k); // from the finest mesh, then kept
+    VM::Compressed_mode_options options;
+    options.sparsity_weight = mu;
+    options.admm_tolerance = 1e-8;
+    const VM::Modes modes = VM::compressed_modes(p, k, options);
+    eigenvalues.push_back(ordinary.energies);
+    objectives.push_back(modes.objectives);
+  }
+  // [0]: 4 levels, [1]: 3, [2]: 2.
+  auto gap = [](const Eigen::VectorXd& a, const Eigen::VectorXd& b) { return ((a - b).array() / b.array()).abs().maxCoeff(); };
+  EXPECT_LT(gap(eigenvalues[1], eigenvalues[0]), gap(eigenvalues[2], eigenvalues[1]));
+  EXPECT_LT(gap(eigenvalues[1], eigenvalues[0]), 0.02);
+  EXPECT_LT(gap(objectives[1], objectives[0]), gap(objectives[2], objectives[1]));
+  EXPECT_LT(gap(objectives[1], objectives[0]), 0.05);
+}
