@@ -12,6 +12,8 @@
 #include <CGAL/IO/OBJ.h>
 #include <CGAL/IO/OFF.h>
 #include <CGAL/IO/OFF/File_header_OFF.h>
+#include <CGAL/IO/OFF/File_header_extended_OFF.h>
+#include <CGAL/IO/binary_file_io.h>
 #include <CGAL/IO/PLY.h>
 #include <CGAL/IO/STL.h>
 
@@ -22,6 +24,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <locale>
 #include <map>
 #include <set>
@@ -328,6 +331,59 @@ std::string off_number(double x)
   return out.str();
 }
 
+// CGAL 5.5's OFF header reader doubles the announced edge count as an int, undefined beyond
+// INT_MAX / 2 (found by test/fuzz's mesh target).  Reads the header up to that count with the
+// same stream operations as CGAL's reader, so that exactly the headers it would double are seen;
+// returns the reason to refuse, or "".
+std::string off_edge_count_defect(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  char c;
+  while((in >> c) && c == '#') in >> CGAL::skip_until_EOL;
+  if(!in) return "";
+  std::string keyword(1, c);
+  while(keyword.size() < 41 && in.get(c) && std::isalnum(c)) keyword += c;
+  // The prefixes CGAL accepts before OFF or SKEL: ST, C, N, 4, n (n adds a dimension count).
+  std::size_t j = 0;
+  for(const char* prefix : {"ST", "C", "N", "4"})
+    if(keyword.compare(j, std::strlen(prefix), prefix) == 0) j += std::strlen(prefix);
+  const bool dimensional = keyword.compare(j, 1, "n") == 0;
+  if(dimensional) ++j;
+  const std::string kind = keyword.substr(j);
+  if(kind != "OFF") return ""; // SKEL has no edge count; anything else CGAL refuses
+  in >> CGAL::skip_comment_OFF >> c;
+  if(!in) return "";
+  long long edges = 0;
+  if(std::isdigit(static_cast<unsigned char>(c)))
+  {
+    in.putback(c);
+    int n;
+    in >> n;                 // vertices
+    if(dimensional) in >> n; // then vertices
+    in >> n;                 // facets
+    if(!in || n < 0) return "";
+    int n_h;
+    in >> n_h;
+    if(!in) return ""; // CGAL stops before doubling an unreadable count
+    edges = n_h;
+  }
+  else
+  {
+    keyword.assign(1, c);
+    while(keyword.size() < 41 && in.get(c) && std::isalnum(c)) keyword += c;
+    if(keyword != "BINARY") return "";
+    if(c != '\n') in >> CGAL::skip_until_EOL;
+    std::int32_t counts[4] = {0, 0, 0, 0};
+    for(int k = 0; k < (dimensional ? 4 : 3); ++k) CGAL::I_Binary_read_big_endian_integer32(in, counts[k]);
+    if(counts[dimensional ? 2 : 1] < 0) return "";
+    edges = counts[dimensional ? 3 : 2];
+  }
+  const long long limit = std::numeric_limits<int>::max() / 2;
+  if(edges > limit || edges < -limit)
+    return "the header announces " + std::to_string(edges) + " edges, more than CGAL's OFF reader can count";
+  return "";
+}
+
 // CGAL 5.5's OFF reader trusts what an ASCII file announces: it reserves the header's counts,
 // converts a facet's vertex count and indices to std::size_t unchecked (undefined for negative,
 // fractional or huge ones), and reads colour entries past the end of short lines or of lines
@@ -335,6 +391,7 @@ std::string off_number(double x)
 // or "" (also for binary OFF: CGAL decides).  Each case was found by test/fuzz's mesh target.
 std::string off_structure_defect(const std::string& path)
 {
+  if(const std::string defect = off_edge_count_defect(path); !defect.empty()) return defect;
   std::ifstream in(path, std::ios::binary | std::ios::ate);
   const double bytes = static_cast<double>(in.tellg());
   in.seekg(0);

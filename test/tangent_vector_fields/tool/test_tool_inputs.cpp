@@ -221,6 +221,20 @@ TEST(MeshInput, OffFacetCountBeyondItsLineIsRefused)
   const std::string odd = file_with("odd_keyword.off", "OFF'4 433333333 0 1\n3 0 2 1\n");
   EXPECT_EQ(mesh_error(odd), "cannot read a polygon mesh from '" + odd + "' (malformed OFF: the header announces "
                              "4 vertices and 433333333 facets, more than a file of 28 bytes can hold)");
+  // CGAL doubled the announced edge count as an int (2 * 1092036785: undefined), in ASCII and
+  // in binary headers; an edge count it can double is read as before.
+  const std::string edges = file_with("announced_edges.off", "OFF\n4 1 1092036785\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n");
+  EXPECT_EQ(mesh_error(edges), "cannot read a polygon mesh from '" + edges + "' (malformed OFF: the header announces "
+                               "1092036785 edges, more than CGAL's OFF reader can count)");
+  const std::string negative_edges = file_with("negative_edges.off", "NOFF # normals\n# a comment\n3 1 -1092036785\n");
+  EXPECT_EQ(mesh_error(negative_edges), "cannot read a polygon mesh from '" + negative_edges + "' (malformed OFF: the "
+                                        "header announces -1092036785 edges, more than CGAL's OFF reader can count)");
+  const std::string binary = file_with("binary_edges.off", std::string("OFF BINARY\n") +
+                                                               std::string("\0\0\0\3\0\0\0\1\x7f\xff\xff\xff", 12));
+  EXPECT_EQ(mesh_error(binary), "cannot read a polygon mesh from '" + binary + "' (malformed OFF: the header announces "
+                                "2147483647 edges, more than CGAL's OFF reader can count)");
+  const std::string countable = file_with("countable_edges.off", "OFF\n3 1 1073741823\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  EXPECT_EQ(read_mesh_file(countable).polygons.size(), 1u);
 }
 
 // fuzz_mesh: CGAL's PLY reader crashed (a null dereference) on a property line before any
