@@ -29,6 +29,7 @@
 namespace CGAL {
 namespace Tangent_vector_fields {
 class Eigenfield_basis;
+struct Spline_report;
 }
 } // namespace CGAL
 
@@ -279,6 +280,11 @@ std::string about(const std::string& path, const std::string& reason);
 std::string extension(const std::string& path);
 /// The norm `sqrt(x^T MX x)` of a field.
 double field_norm(const TVF::Operator_matrices& matrices, const Eigen::VectorXd& x);
+// A reduced spline's guaranteed error bound (Spline_report::error_bound), one line.
+void say_error_bound(const TVF::Spline_report& reduced);
+// After --exact: the reduced answer's measured error next to its bound.  `relative_l2` is
+// |x_reduced - x_exact| / |x_exact| (L2); the energy-norm error follows from the two energies.
+void say_reduced_against_exact(const TVF::Spline_report& reduced, const TVF::Spline_report& exact, double relative_l2);
 /// Vertex values (divergence, curl) of a field as a `std::vector`.
 std::vector<double> to_std_vector(const Eigen::VectorXd& x);
 /// Replaces line breaks by "; " so that an error stays on one line.

@@ -6,8 +6,11 @@
 
 #include "tool.h"
 
+#include <CGAL/Tangent_vector_fields/Spline_solver.h>
+
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdarg>
 #include <cstdio>
 #include <iostream>
@@ -307,6 +310,27 @@ double field_norm(const TVF::Operator_matrices& matrices, const Eigen::VectorXd&
 }
 
 std::vector<double> to_std_vector(const Eigen::VectorXd& x) { return std::vector<double>(x.data(), x.data() + x.size()); }
+
+void say_error_bound(const TVF::Spline_report& reduced)
+{
+  if(std::isnan(reduced.error_bound))
+    say("  error bound: none known (a guide's alignment term, or a basis that does not say which eigenvalues it "
+        "lacks)\n");
+  else
+    say("  error bound: |x - x*|_E <= %.3g |x*|_E against the exact spline x* (energy norm, guaranteed; --exact "
+        "measures it)\n",
+        reduced.error_bound);
+}
+
+void say_reduced_against_exact(const TVF::Spline_report& reduced, const TVF::Spline_report& exact, double relative_l2)
+{
+  // |x - x*|_E^2 = E(x) - E(x*) for a feasible x (the optimality of x*): the excess energy.
+  const double excess = std::max(0., reduced.energy - exact.energy);
+  const double energy_error = exact.energy > 0 ? std::sqrt(excess / exact.energy) : 0.;
+  say("  exact: constraint residual %.2e; energy E_B + omega E_D = %.6g\n", exact.constraint_residual, exact.energy);
+  say("  the reduced answer's error: %.3g of the exact field in the energy norm (bound %.3g), %.3g in L2\n",
+      energy_error, reduced.error_bound, relative_l2);
+}
 
 std::string one_line(std::string text)
 {

@@ -150,6 +150,8 @@ public:
   void save(const std::string& path) const;
 
   const Operator_matrices& operators() const { return solver_->operators(); }
+  /// The Hodge solver the basis was computed with (its factorisations serve the exact splines).
+  std::shared_ptr<const Hodge_solver> shared_hodge_solver() const { return solver_; }
 
   int size() const { return static_cast<int>(order_.size()); }
   int number_of_harmonic() const { return static_cast<int>(harmonic_.cols()); }

@@ -10,10 +10,13 @@
 /// edits) or at full resolution (exact); and a one-shot function.
 
 #include <CGAL/Tangent_vector_fields/N_field_spline_solver.h>
+#include <CGAL/Tangent_vector_fields/internal/Answering_spline.h>
 #include <CGAL/Tangent_vector_fields/smoothest_n_field.h>
 
+#include <chrono>
 #include <functional>
 #include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -74,11 +77,11 @@ public:
       basis_options.progress = choose_parameter(get_parameter(np, internal_np::progress_callback),
                                                 std::function<void(const Spectral_progress&)>());
       basis_ = std::make_shared<const N_field_basis>(operators_, d, basis_options);
-      solver_ = std::make_unique<Reduced_n_field_spline_solver>(basis_, basis_->size(), spline_options, order,
-                                                                alignment(np));
+      make_reduced(basis_->size(), spline_options, order, alignment(np));
     }
     else
-      solver_ = std::make_unique<Full_n_field_spline_solver>(operators_, spline_options, order, alignment(np));
+      spline_ = std::make_unique<Answering>(
+          std::make_unique<Full_n_field_spline_solver>(operators_, spline_options, order, alignment(np)));
   }
 
   /// Reduced on a basis computed before (e.g. `N_field_basis::load`ed for this mesh, with
@@ -100,7 +103,7 @@ public:
     operators_ = basis_->shared_operators();
     Spline_options spline_options;
     spline_options.omega = choose_parameter(get_parameter(np, internal_np::spline_tension), 0.);
-    solver_ = std::make_unique<Reduced_n_field_spline_solver>(basis_, d, spline_options, order, alignment(np));
+    make_reduced(d, spline_options, order, alignment(np));
   }
 
   /// The n-field's vectors in face `f` are `v` (projected) and its turns by `2 pi j / n`.
@@ -122,24 +125,28 @@ public:
   {
     return add(N_field_constraint::singularity_at_vertex(vertex_index_(v), k));
   }
-  Constraint_id add(const N_field_constraint& c) { return solver_->add(c); }
+  Constraint_id add(const N_field_constraint& c) { return spline_->add(c); }
+  /// Adds several (one batch of pull-backs at full resolution); all or nothing.
+  std::vector<Constraint_id> add(const std::vector<N_field_constraint>& c) { return spline_->add(c); }
 
   /// New vector of a vector constraint: a value edit (no new rows).
   template <class Vector_3>
   void set_vector(Constraint_id id, const Vector_3& v)
   {
-    N_field_constraint c = solver_->constraint(id);
+    N_field_constraint c = spline_->constraint(id);
     c.vector = triple(v);
-    solver_->change(id, c);
+    spline_->change(id, c);
   }
-  void remove(Constraint_id id) { solver_->remove(id); }
+  void remove(Constraint_id id) { spline_->remove(id); }
 
   /// Writes the field into a face map: per face the first of its n vectors, of length the
-  /// field's magnitude (`unit`: length 1; faces where the field vanishes get 0).
+  /// field's magnitude (`unit`: length 1; faces where the field vanishes get 0).  The exact
+  /// spline when it is known (always at full resolution; on a basis once refined), else the
+  /// reduced one; `which` (optional) receives which one it is.
   template <class FaceVectorMap>
-  void field(FaceVectorMap out, bool unit = false) const
+  void field(FaceVectorMap out, bool unit = false, Spline_answer* which = nullptr) const
   {
-    const Eigen::VectorXd z = solver_->field();
+    const Eigen::VectorXd z = spline_->field(which);
     adapter_->write_field(operators_->to_vectors(unit ? operators_->normalized(z) : z), out);
   }
   /// Writes the index `k` (index `k / n`) of every vertex into a vertex map; returns the
@@ -147,7 +154,7 @@ public:
   template <class VertexIntMap>
   std::vector<std::pair<vertex_descriptor, int>> singularities(VertexIntMap index) const
   {
-    const std::vector<int> k = n_field_indices(*operators_, solver_->field());
+    const std::vector<int> k = n_field_indices(*operators_, spline_->field());
     std::vector<std::pair<vertex_descriptor, int>> singular;
     for(std::size_t v = 0; v < k.size(); ++v)
     {
@@ -157,8 +164,37 @@ public:
     return singular;
   }
 
-  const Spline_report& report() const { return solver_->report(); }
-  N_field_spline_solver& solver() { return *solver_; }
+  /// The report of the answering spline; for a reduced one `error_bound` bounds its distance
+  /// to the exact spline.
+  const Spline_report& report() const { return spline_->report(); }
+  /// Which spline `field` answers with.
+  Spline_answer answer() const { return spline_->answer(); }
+  bool is_exact() const { return answer().exact; }
+  /// On a basis: computes the exact spline in this thread (the energy is factored at full
+  /// resolution once, then one pull-back per constraint); `cancelled` is asked between
+  /// constraints.  Nothing to do at full resolution.
+  void refine(const Refinement_progress& progress = Refinement_progress(),
+              const std::function<bool()>& cancelled = std::function<bool()>())
+  {
+    spline_->refine(progress, cancelled);
+  }
+  /// On a basis: refines on a worker thread while reduced answers keep coming at once.
+  void refine_in_background(Refinement_progress progress = Refinement_progress())
+  {
+    spline_->refine_in_background(std::move(progress));
+  }
+  /// Waits for the exact spline (at most `timeout`); true if `field` now answers exactly.
+  bool wait_until_exact(std::chrono::milliseconds timeout) { return spline_->wait_until_exact(timeout); }
+  /// Stops refining and drops the full-resolution pull-backs.
+  void stop_refining() { spline_->stop_refining(); }
+  /// Why a refinement failed (empty if none): the answer stays reduced.
+  const std::string& refinement_error() const { return spline_->refinement_error(); }
+  /// The solver `field` answers with (the reduced one until a refinement is complete).
+  const N_field_spline_solver& solver() const
+  {
+    const N_field_spline_solver* full = spline_->full();
+    return full && is_exact() ? *full : static_cast<const N_field_spline_solver&>(*spline_->reduced());
+  }
   const N_field_operators& operators() const { return *operators_; }
   /// The basis of a reduced spline (null at full resolution).
   std::shared_ptr<const N_field_basis> basis() const { return basis_; }
@@ -182,10 +218,25 @@ private:
     return internal::to_array(v);
   }
 
+  typedef internal::Answering_spline<Reduced_n_field_spline_solver, Full_n_field_spline_solver> Answering;
+
+  // Reduced on `basis_`, refined by a full solver of the same energy made when first needed.
+  void make_reduced(int d, const Spline_options& options, int order, const N_field_alignment& alignment)
+  {
+    std::shared_ptr<const N_field_operators> operators = operators_;
+    spline_ = std::make_unique<Answering>(
+        std::make_unique<Reduced_n_field_spline_solver>(basis_, d, options, order, alignment),
+        [operators, options, order, alignment](double omega) {
+          Spline_options with = options;
+          with.omega = omega;
+          return std::make_unique<Full_n_field_spline_solver>(operators, with, order, alignment);
+        });
+  }
+
   std::shared_ptr<internal::Mesh_adapter<TriangleMesh>> adapter_;
   std::shared_ptr<const N_field_operators> operators_;
   std::shared_ptr<const N_field_basis> basis_;
-  std::unique_ptr<N_field_spline_solver> solver_;
+  std::unique_ptr<Answering> spline_;
   std::function<int(vertex_descriptor)> vertex_index_;
   std::function<int(face_descriptor)> face_index_;
 };
@@ -201,7 +252,7 @@ Spline_report n_field_spline(const TriangleMesh& mesh, int n, const std::vector<
                              FaceVectorMap out, const NamedParameters& np = parameters::default_values())
 {
   N_field_spline<TriangleMesh> spline(mesh, n, np);
-  spline.solver().add(constraints);
+  spline.add(constraints);
   spline.field(out);
   return spline.report();
 }

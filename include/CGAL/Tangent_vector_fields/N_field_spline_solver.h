@@ -79,6 +79,8 @@ protected:
   void energy_changed() override { update_energy(); }
   std::string kernel_noun() const override { return "parallel-field"; }
   const Eigen::VectorXd& unconstrained_minimiser() const override { return aligned_; }
+  double lowest_missing_energy() const override;
+  Eigen::VectorXd field_masses() const override { return operators().masses(); }
 
 private:
   void update_energy();

@@ -50,6 +50,8 @@ protected:
   int space_dimension() const override { return d_; }
   std::string dependency_hint() const override;
   void energy_changed() override { update_energy(); }
+  double lowest_missing_energy() const override;
+  Eigen::VectorXd field_masses() const override;
 
 private:
   void update_energy();

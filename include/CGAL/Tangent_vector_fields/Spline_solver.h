@@ -15,6 +15,7 @@
 
 #include <Eigen/Core>
 
+#include <limits>
 #include <map>
 #include <memory>
 #include <string>
@@ -71,8 +72,20 @@ struct Spline_report
   /// `E_B(x) + omega_eff E_D(x)` of the solution, for the mesh as given (n-field splines
   /// with a soft alignment add its term, see `N_field_alignment`).
   double energy = 0;
+  /// A guaranteed upper bound on `|x - x*|_E / |x*|_E`: the error of this answer `x` against
+  /// the exact spline `x*` of the same constraints, in the energy norm `|v|_E^2 = E_B(v) +
+  /// omega E_D(v)`, relative to the exact spline's.  0 for full-resolution solvers (they are
+  /// exact).  For a reduced spline it follows from the basis alone (SPEC 7; see
+  /// `relative_error_bound` in Spline_error_bound_impl.h): the pull-backs' part outside the basis
+  /// is bounded by the lowest energy missing from it.  NaN when no bound is known: an
+  /// alignment term, or a basis that does not say which eigenvalues it lacks.
+  double error_bound = 0;
   std::vector<std::string> warnings;
 };
+
+/// An error bound above this is reported among the warnings: the reduced answer may be far
+/// from the spline asked for (the energy-norm error can reach a tenth of the field's).
+constexpr double error_bound_warning = 0.1;
 
 /// \brief Common part of the spline solvers, for a kind of constraint and the operators
 /// of the fields it constrains (vector fields: `Spline_solver`; n-fields: `N_field_spline_solver`).
@@ -208,6 +221,15 @@ protected:
   /// energy has a linear term (a soft alignment to a guide field); the spline is then this
   /// plus a combination of the pull-backs.
   virtual const Eigen::VectorXd& unconstrained_minimiser() const { return no_offset_; }
+  /// For the error bound: the smallest energy `D_k` of a field the solver cannot represent, in
+  /// the solver's units (infinity: none is missing, the solver is exact; NaN or 0: unknown).
+  virtual double lowest_missing_energy() const { return std::numeric_limits<double>::infinity(); }
+  /// For the error bound: the mass `MX` of each coordinate of the field space (`2nf`), in the
+  /// solver's units, in which the solver's representation of a row is orthonormal.
+  virtual Eigen::VectorXd field_masses() const { return Eigen::VectorXd(); }
+  /// `representation` of rows `a` and `b` as the solver's own coefficients (reduced solvers:
+  /// the row on each basis element); their dot product is the rows' product on the basis.
+  virtual double represented_product(const Row& a, const Row& b) const { return a.representation.dot(b.representation); }
 
   /// The fields (frame or power coordinates, `2nf` rows) of solutions of the solver's
   /// space (columns): the identity for full-resolution solvers, the basis for reduced ones.
@@ -242,6 +264,8 @@ private:
   void set_scales();
   void solve() const;
   void make_report() const;
+  // Spline_report::error_bound of the current solution (Spline_error_bound_impl.h).
+  double relative_error_bound() const;
   // sum_i y_i weights(i, k) for each column k of `weights` (one row per constraint row).
   Eigen::MatrixXd combined_pull_backs(const Eigen::MatrixXd& weights) const;
 
@@ -260,6 +284,11 @@ private:
     Eigen::MatrixXd responses; // its change per unit change of each value
   };
   mutable Value_edit_cache edit_cache_;
+  // The small system of the error bound (the rows' Gram matrix enlarged by the bound on their
+  // part outside the basis), kept while the rows stay (value edits do not change it).
+  long rows_version_ = 0; // counts changes of the rows (not of their values)
+  mutable long bound_version_ = -1;
+  mutable std::unique_ptr<internal::Constraint_system> bound_system_;
   int harmonic_dimension_;
   mutable bool solved_ = false, reported_ = false;
   mutable Eigen::VectorXd solution_;

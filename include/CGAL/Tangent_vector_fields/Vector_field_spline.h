@@ -12,11 +12,15 @@
 #include <CGAL/Tangent_vector_fields/Full_spline_solver.h>
 #include <CGAL/Tangent_vector_fields/Reduced_spline_solver.h>
 #include <CGAL/Tangent_vector_fields/Spectral_basis.h>
+#include <CGAL/Tangent_vector_fields/internal/Answering_spline.h>
 
 #include <CGAL/boost/graph/helpers.h>
 
+#include <chrono>
 #include <functional>
 #include <memory>
+#include <string>
+#include <vector>
 
 namespace CGAL {
 namespace Tangent_vector_fields {
@@ -25,8 +29,13 @@ namespace Tangent_vector_fields {
 ///
 /// Minimises `E_B(x) + omega E_D(x)` subject to the constraints (see `Spline_solver`
 /// for the method, the treatment of harmonic fields and the error reporting).
-/// Built on a `Spectral_basis` it solves in the span of the basis (microseconds per
-/// edit); built on a mesh it solves on all `2 nf` unknowns (the exact answer).
+/// Built on a mesh it solves on all `2 nf` unknowns: the exact answer.  Built on a
+/// `Spectral_basis` it answers at once in the span of the basis (microseconds per edit),
+/// with a guaranteed bound on how far that is from the exact spline
+/// (`report().error_bound`), and gives the exact spline on request: `refine()` in this
+/// thread or `refine_in_background()` on a worker, sharing the basis' factorisations
+/// (see `Refining_spline_solver`).  `answer()` and `field(out, &which)` say which spline a
+/// field is.
 ///
 /// Named parameters of both constructors:
 /// - `spline_tension` (double, default 0): `omega`, for the mesh scaled to unit area;
@@ -57,8 +66,16 @@ public:
     using parameters::choose_parameter;
     using parameters::get_parameter;
     set_index_maps(basis.operators().mesh(), np);
-    solver_ = std::make_unique<Reduced_spline_solver>(
-        basis.shared_basis(), choose_parameter(get_parameter(np, internal_np::number_of_eigenfields), 0), options(np));
+    const Spline_options o = options(np);
+    std::shared_ptr<const Hodge_solver> hodge = basis.shared_basis()->shared_hodge_solver();
+    spline_ = std::make_unique<Answering>(
+        std::make_unique<Reduced_spline_solver>(basis.shared_basis(),
+                                                choose_parameter(get_parameter(np, internal_np::number_of_eigenfields), 0), o),
+        [hodge, o](double omega) {
+          Spline_options with = o;
+          with.omega = omega;
+          return std::make_unique<Full_spline_solver>(hodge, with);
+        });
   }
 
   /// Full resolution on `mesh` (which must outlive this object).
@@ -67,8 +84,8 @@ public:
     : operators_(mesh, np)
   {
     set_index_maps(mesh, np);
-    solver_ = std::make_unique<Full_spline_solver>(std::make_shared<Hodge_solver>(operators_.shared_matrices()),
-                                                   options(np));
+    spline_ = std::make_unique<Answering>(
+        std::make_unique<Full_spline_solver>(std::make_shared<Hodge_solver>(operators_.shared_matrices()), options(np)));
   }
 
   /// The field equals `v` (projected) in face `f`.
@@ -113,35 +130,71 @@ public:
     return add(Field_constraint::boundary_alignment(intrinsic(), edge_index_(e)));
   }
   /// Adds a constraint given by indices (see `Field_constraint`).
-  Constraint_id add(const Field_constraint& c) { return solver_->add(c); }
+  Constraint_id add(const Field_constraint& c) { return spline_->add(c); }
+  /// Adds several (one batch of pull-backs at full resolution); all or nothing.
+  std::vector<Constraint_id> add(const std::vector<Field_constraint>& c) { return spline_->add(c); }
 
   /// New vector of a vector constraint, or new value of a divergence or curl
   /// constraint: one back-substitution at the next solve.
   template <class Vector_3>
   void set_vector(Constraint_id id, const Vector_3& v)
   {
-    Field_constraint c = solver_->constraint(id);
+    Field_constraint c = spline_->constraint(id);
     c.vector = triple(v);
-    solver_->change(id, c);
+    spline_->change(id, c);
   }
   void set_value(Constraint_id id, double value)
   {
-    Field_constraint c = solver_->constraint(id);
+    Field_constraint c = spline_->constraint(id);
     c.value = value;
-    solver_->change(id, c);
+    spline_->change(id, c);
   }
-  void remove(Constraint_id id) { solver_->remove(id); }
-  void set_tension(double omega) { solver_->set_omega(omega); }
+  void remove(Constraint_id id) { spline_->remove(id); }
+  void set_tension(double omega) { spline_->set_omega(omega); }
 
-  /// Writes the spline into a face map of 3D vectors.
+  /// Writes the spline into a face map of 3D vectors: the exact one when it is known (always
+  /// at full resolution; on a basis once refined), else the reduced one.  `which` (optional)
+  /// receives which one it is.
   template <class FaceVectorMap>
-  void field(FaceVectorMap out) const
+  void field(FaceVectorMap out, Spline_answer* which = nullptr) const
   {
-    operators_.from_frame_coordinates(solver_->field(), out);
+    operators_.from_frame_coordinates(spline_->field(which), out);
   }
-  const Spline_report& report() const { return solver_->report(); }
-  const Spline_solver& solver() const { return *solver_; }
-  Spline_solver& solver() { return *solver_; }
+  /// The report of the answering spline; for a reduced one `error_bound` bounds its distance
+  /// to the exact spline.
+  const Spline_report& report() const { return spline_->report(); }
+  /// Which spline `field` answers with.
+  Spline_answer answer() const { return spline_->answer(); }
+  bool is_exact() const { return answer().exact; }
+
+  /// On a basis: computes the exact spline in this thread (the first call factors nothing new:
+  /// the basis' Hodge solver is reused; each constraint costs one pull-back at full resolution).
+  /// `cancelled` is asked between constraints.  Nothing to do at full resolution.
+  /// 	hrows Infeasible_constraints as `Refining_spline_solver::refine`.
+  void refine(const Refinement_progress& progress = Refinement_progress(),
+              const std::function<bool()>& cancelled = std::function<bool()>())
+  {
+    spline_->refine(progress, cancelled);
+  }
+  /// On a basis: refines on a worker thread, also every constraint added or moved later, while
+  /// the reduced answers keep coming at once; `field` turns exact when the worker is done.
+  void refine_in_background(Refinement_progress progress = Refinement_progress())
+  {
+    spline_->refine_in_background(std::move(progress));
+  }
+  /// Waits for the exact spline (at most `timeout`); true if `field` now answers exactly.
+  bool wait_until_exact(std::chrono::milliseconds timeout) { return spline_->wait_until_exact(timeout); }
+  /// Stops refining and drops the full-resolution pull-backs (one field per row).
+  void stop_refining() { spline_->stop_refining(); }
+  /// Why a refinement failed (empty if none): the answer stays reduced.
+  const std::string& refinement_error() const { return spline_->refinement_error(); }
+
+  /// The solver `field` answers with (the reduced one until a refinement is complete).
+  const Spline_solver& solver() const
+  {
+    const Spline_solver* full = spline_->full();
+    return full && is_exact() ? *full : static_cast<const Spline_solver&>(*spline_->reduced());
+  }
 
 private:
   template <class NamedParameters>
@@ -172,8 +225,10 @@ private:
 
   const Intrinsic_mesh& intrinsic() const { return operators_.intrinsic_mesh(); }
 
+  typedef internal::Answering_spline<Reduced_spline_solver, Full_spline_solver> Answering;
+
   Discrete_operators<TriangleMesh> operators_; // shares the basis' mesh data and matrices
-  std::unique_ptr<Spline_solver> solver_;
+  std::unique_ptr<Answering> spline_;
   std::function<int(vertex_descriptor)> vertex_index_;
   std::function<int(edge_descriptor)> edge_index_;
   std::function<int(face_descriptor)> face_index_;
@@ -193,7 +248,7 @@ Spline_report vector_field_spline(const TriangleMesh& mesh, const std::vector<Fi
                                   FaceVectorMap out, const NamedParameters& np = parameters::default_values())
 {
   Vector_field_spline<TriangleMesh> spline(mesh, np);
-  spline.solver().add(constraints);
+  spline.add(constraints);
   spline.field(out);
   return spline.report();
 }

@@ -4,7 +4,9 @@
 #include <CGAL/Tangent_vector_fields/Reduced_spline_solver.h>
 #include <CGAL/Tangent_vector_fields/errors.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace CGAL {
 namespace Tangent_vector_fields {
@@ -38,6 +40,23 @@ void Reduced_spline_solver::update_energy()
     energy_[k] = basis_->type(k) == Eigenfield_type::harmonic ? 0 : lambda * lambda + omega_ * lambda;
     inverse_energy_[k] = energy_[k] > 0 ? 1 / energy_[k] : 0;
   }
+}
+
+double Reduced_spline_solver::lowest_missing_energy() const
+{
+  // Missing: the basis' own elements from d on (sorted), and what it never computed.
+  const Basis_report& report = basis_->report();
+  double lambda = std::min(report.exact_complete_below, report.coexact_complete_below);
+  if(d_ < basis_->size()) lambda = std::min(lambda, basis_->eigenvalue(d_));
+  if(lambda == std::numeric_limits<double>::infinity()) return lambda;
+  lambda *= length_unit_ * length_unit_; // as update_energy
+  return lambda * lambda + omega_ * lambda;
+}
+
+Eigen::VectorXd Reduced_spline_solver::field_masses() const
+{
+  // MX / u^2, in which the rows' representation (u times the basis) is orthonormal.
+  return operators().field_masses() / (length_unit_ * length_unit_);
 }
 
 void Reduced_spline_solver::pull_back(std::vector<Row>& rows) const

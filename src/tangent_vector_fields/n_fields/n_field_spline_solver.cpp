@@ -5,7 +5,9 @@
 #include <CGAL/Model_reduction/Sparse_spd_solver.h>
 #include <CGAL/Tangent_vector_fields/internal/Spline_solver_impl.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 namespace CGAL {
@@ -117,6 +119,15 @@ void Reduced_n_field_spline_solver::update_energy()
     inverse_energy_[k] = energy_[k] > 0 ? 1 / energy_[k] : 0.;
   }
   if(alignment_weight_ > 0) aligned_ = alignment_weight_ * guide_.cwiseProduct(inverse_energy_);
+}
+
+double Reduced_n_field_spline_solver::lowest_missing_energy() const
+{
+  // Missing: the basis' own elements from d on (sorted), and what it never computed.
+  double lambda = basis_->report().complete_below;
+  if(d_ < basis_->size()) lambda = std::min(lambda, basis_->eigenvalue(d_));
+  if(lambda == std::numeric_limits<double>::infinity()) return lambda;
+  return std::pow(lambda, order_) + omega_ * lambda + alignment_weight_; // as update_energy
 }
 
 void Reduced_n_field_spline_solver::pull_back(std::vector<Row>& rows) const

@@ -10,6 +10,7 @@
 #include <CGAL/Tangent_vector_fields/Full_spline_solver.h>
 #include <CGAL/Tangent_vector_fields/Reduced_spline_solver.h>
 #include <CGAL/Tangent_vector_fields/Refining_spline_solver.h>
+#include <CGAL/Tangent_vector_fields/Vector_field_spline.h>
 #include <CGAL/Tangent_vector_fields/errors.h>
 
 #include <gtest/gtest.h>
@@ -289,4 +290,79 @@ TEST(RefiningSpline, SoonestFieldIsTheAnswerItSays)
   for(int i = 3; i < 9; ++i) add_and_check(i, true);
   ASSERT_TRUE(spline->wait_until_exact(std::chrono::minutes(2)));
   EXPECT_LT(relative_mx_error(*s.ops, spline->soonest_field(), fresh_solves(s, d, set).full), 1e-9);
+}
+
+// The generic class answers exactly too: on a basis it answers at once with the reduced spline
+// and its error bound, `refine()` (this thread) and `refine_in_background()` (a worker) turn
+// its field into the one-shot full-resolution spline of the same constraints, an added
+// constraint makes it reduced again until refined, and `answer()` / `field(out, &which)` say
+// which one a field is.  Against `vector_field_spline` (the one-shot full solve, another path).
+TEST(RefiningSpline, GenericSplineGivesTheExactAnswerOnRequestAndInTheBackground)
+{
+  Mesh mesh = make_torus(16, 10);
+  TVF::Spectral_basis<Mesh> basis(mesh, TVF::parameters::number_of_eigenfields(40));
+  TVF::Vector_field_spline<Mesh> spline(basis, TVF::parameters::spline_tension(1.0));
+  const TVF::Intrinsic_mesh& m = spline.solver().operators().mesh();
+  std::vector<TVF::Field_constraint> constraints = mixed_constraints(m, 3, 9);
+  spline.add(constraints);
+  auto field_of = [&](auto& s, TVF::Spline_answer* which) {
+    auto out = mesh.add_property_map<Face_index, Vector_3>("f:answer", Vector_3(0, 0, 0)).first;
+    s.field(out, which);
+    std::vector<Vector_3> v(out.begin(), out.end());
+    mesh.remove_property_map(out);
+    return v;
+  };
+  auto exact_of = [&](const std::vector<TVF::Field_constraint>& c) {
+    auto out = mesh.add_property_map<Face_index, Vector_3>("f:exact", Vector_3(0, 0, 0)).first;
+    TVF::vector_field_spline(mesh, c, out, TVF::parameters::spline_tension(1.0));
+    std::vector<Vector_3> v(out.begin(), out.end());
+    mesh.remove_property_map(out);
+    return v;
+  };
+  auto difference = [](const std::vector<Vector_3>& a, const std::vector<Vector_3>& b) {
+    double d = 0, n = 0;
+    for(std::size_t f = 0; f < a.size(); ++f)
+    {
+      d = std::max(d, std::sqrt((a[f] - b[f]).squared_length()));
+      n = std::max(n, std::sqrt(b[f].squared_length()));
+    }
+    return d / n;
+  };
+  TVF::Spline_answer which;
+  const std::vector<Vector_3> reduced = field_of(spline, &which);
+  EXPECT_FALSE(which.exact);
+  EXPECT_EQ(which.basis_size, 40);
+  EXPECT_FALSE(spline.is_exact());
+  EXPECT_GT(spline.report().error_bound, 0.);
+  const std::vector<Vector_3> exact = exact_of(constraints);
+  EXPECT_GT(difference(reduced, exact), 1e-3) << "a reduced answer that is exact tells nothing";
+
+  int progress_calls = 0;
+  spline.refine([&](int done, int total) { progress_calls += done <= total; });
+  EXPECT_GT(progress_calls, 0);
+  EXPECT_TRUE(spline.is_exact());
+  EXPECT_EQ(spline.report().error_bound, 0.);
+  // Same constraints, other row order and factorisation: 1e-9 of the largest vector.
+  EXPECT_LT(difference(field_of(spline, &which), exact), 1e-9);
+  EXPECT_TRUE(which.exact);
+
+  // A new constraint: reduced at once, exact again from the worker.
+  constraints.push_back(TVF::Field_constraint::vector_in_face(77, tangent(m, 77, 0.5, -1)));
+  spline.add(constraints.back());
+  spline.refine_in_background();
+  field_of(spline, &which);
+  const std::vector<Vector_3> exact_after = exact_of(constraints);
+  ASSERT_TRUE(spline.wait_until_exact(std::chrono::seconds(60))) << spline.refinement_error();
+  EXPECT_LT(difference(field_of(spline, &which), exact_after), 1e-9);
+  EXPECT_TRUE(which.exact);
+  spline.stop_refining();
+  EXPECT_FALSE(spline.is_exact()) << "without the full pull-backs the answer is reduced again";
+
+  // At full resolution every answer is exact and refining is nothing to do.
+  TVF::Vector_field_spline<Mesh> full(mesh, TVF::parameters::spline_tension(1.0));
+  full.add(constraints);
+  EXPECT_TRUE(full.is_exact());
+  full.refine();
+  EXPECT_LT(difference(field_of(full, &which), exact_after), 1e-12);
+  EXPECT_TRUE(which.exact);
 }

@@ -9,13 +9,16 @@
 #include "n_field_test_support.h"
 
 #include <CGAL/Tangent_vector_fields/N_field_basis.h>
+#include <CGAL/Tangent_vector_fields/N_field_spline.h>
 #include <CGAL/Tangent_vector_fields/N_field_spline_solver.h>
 #include <CGAL/Tangent_vector_fields/Refining_spline_solver.h>
 
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <map>
 
 using namespace nfield_test;
@@ -210,4 +213,104 @@ TEST(NFieldSplineTruth, RefiningNFieldSplineAnswersAsTheOneShotSolvers)
     check("removed", true); // a removal needs no pull-back
     spline.stop_background();
   }
+}
+
+TEST(NFieldSplineTruth, ErrorBoundOfReducedSplinesHoldsAgainstTheDenseMinimum)
+{
+  // The reduced n-field spline's error bound (Spline_report::error_bound) is never below its
+  // energy-norm error measured against the full solver's spline, the energy assembled densely
+  // here, for a torus (parallel fields for n = 4) and a curved disk, orders 1 and 2, with and
+  // without tension, at basis sizes cut from a basis of 80 (its `complete_below` bounds the
+  // rest) down to 20.  Unit area, so omega is the solver's as given.
+  std::vector<double> ratios;
+  for(const Mesh& mesh : {unit_area(make_torus(16, 10)), unit_area(make_curved_disk(6))})
+    for(int n : {2, 4})
+    {
+      const auto nops = n_field_operators(mesh, n);
+      const auto basis = std::make_shared<const TVF::N_field_basis>(nops, 80);
+      const auto constraints = random_vector_constraints(nops->mesh(), 6, 5 + n);
+      const Eigen::MatrixXd S = nops->S();
+      const Eigen::VectorXd inverse_mass = nops->masses().cwiseInverse();
+      for(int order : {1, 2})
+        for(double omega : {0., 5.})
+        {
+          if(order == 1 && omega > 0) continue; // the first-order design has no tension
+          TVF::Spline_options options;
+          options.omega = omega;
+          TVF::Full_n_field_spline_solver full(nops, options, order);
+          full.add(constraints);
+          const Eigen::VectorXd exact = full.field();
+          Eigen::MatrixXd E = S;
+          for(int k = 1; k < order; ++k) E = S * inverse_mass.asDiagonal() * E;
+          E += omega * S;
+          for(int d : {20, 40, 80})
+          {
+            TVF::Reduced_n_field_spline_solver reduced(basis, d, options, order);
+            reduced.add(constraints);
+            const Eigen::VectorXd e = reduced.field() - exact;
+            const double measured = std::sqrt(e.dot(E * e) / exact.dot(E * exact));
+            const double bound = reduced.report().error_bound;
+            // Rounding: 1e-6 relative, 1e-7 absolute (differences of energies and of fields).
+            EXPECT_GE(bound, measured * (1 - 1e-6) - 1e-7) << "n " << n << ", m " << order << ", omega " << omega << ", d " << d;
+            if(measured > 1e-6) ratios.push_back(bound / measured);
+          }
+        }
+    }
+  ASSERT_GT(ratios.size(), 20u);
+  std::sort(ratios.begin(), ratios.end());
+  std::printf("bound / measured: min %.3g median %.3g max %.3g over %zu cases\n", ratios.front(),
+              ratios[ratios.size() / 2], ratios.back(), ratios.size());
+  // Measured when written: median 2.6, largest 10; a bound 25 times the error would be of little use.
+  EXPECT_LT(ratios[ratios.size() / 2], 4.);
+  EXPECT_LT(ratios.back(), 25.);
+}
+
+TEST(NFieldSplineTruth, GenericNFieldSplineGivesTheExactAnswerOnRequest)
+{
+  // N_field_spline on a basis answers with the reduced spline and its error bound, then, once
+  // refined (this thread, then a worker after an add), with the one-shot full-resolution
+  // spline of the same constraints (n_field_spline, another path), to 1e-9 of the largest vector.
+  Mesh torus = make_torus(16, 10);
+  TVF::N_field_spline<Mesh> spline(torus, 4, TVF::parameters::number_of_eigenfields(40).spline_tension(2.0));
+  std::vector<TVF::N_field_constraint> constraints = random_vector_constraints(spline.operators().mesh(), 5, 31);
+  spline.add(constraints);
+  auto field_of = [&](TVF::Spline_answer* which) {
+    auto out = torus.add_property_map<Face_index, Vector_3>("f:answer", Vector_3(0, 0, 0)).first;
+    spline.field(out, false, which);
+    std::vector<Vector_3> v(out.begin(), out.end());
+    torus.remove_property_map(out);
+    return v;
+  };
+  auto exact_of = [&](const std::vector<TVF::N_field_constraint>& c) {
+    auto out = torus.add_property_map<Face_index, Vector_3>("f:exact", Vector_3(0, 0, 0)).first;
+    TVF::n_field_spline(torus, 4, c, out, TVF::parameters::spline_tension(2.0));
+    std::vector<Vector_3> v(out.begin(), out.end());
+    torus.remove_property_map(out);
+    return v;
+  };
+  auto difference = [](const std::vector<Vector_3>& a, const std::vector<Vector_3>& b) {
+    double d = 0, n = 0;
+    for(std::size_t f = 0; f < a.size(); ++f)
+    {
+      d = std::max(d, std::sqrt((a[f] - b[f]).squared_length()));
+      n = std::max(n, std::sqrt(b[f].squared_length()));
+    }
+    return d / n;
+  };
+  TVF::Spline_answer which;
+  const std::vector<Vector_3> reduced = field_of(&which);
+  EXPECT_FALSE(which.exact);
+  EXPECT_GT(spline.report().error_bound, 0.);
+  EXPECT_GT(difference(reduced, exact_of(constraints)), 1e-3) << "a reduced answer that is exact tells nothing";
+  spline.refine();
+  EXPECT_LT(difference(field_of(&which), exact_of(constraints)), 1e-9);
+  EXPECT_TRUE(which.exact);
+  EXPECT_EQ(spline.report().error_bound, 0.);
+  constraints.push_back(TVF::N_field_constraint::vector_in_face(60, {{0.3, 0.1, -0.2}}));
+  spline.add(constraints.back());
+  EXPECT_FALSE(spline.is_exact());
+  spline.refine_in_background();
+  ASSERT_TRUE(spline.wait_until_exact(std::chrono::seconds(60))) << spline.refinement_error();
+  EXPECT_LT(difference(field_of(&which), exact_of(constraints)), 1e-9);
+  EXPECT_TRUE(which.exact);
 }

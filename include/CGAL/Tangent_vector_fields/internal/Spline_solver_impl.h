@@ -191,6 +191,7 @@ void Basic_spline_solver<Constraint, Operators>::append(Prepared& prepared, cons
     system_->append(k, kappa, rows[j].harmonic);
     rows_.push_back(std::move(rows[j]));
   }
+  ++rows_version_;
   int row = first;
   for(std::size_t i = 0; i < constraints.size(); ++i)
   {
@@ -248,6 +249,7 @@ void Basic_spline_solver<Constraint, Operators>::remove(Constraint_id id)
   for(auto& e : entries_)
     if(e.second.first_row > first) e.second.first_row -= count;
   ++version_;
+  ++rows_version_;
   solved_ = false;
 }
 
@@ -258,6 +260,7 @@ void Basic_spline_solver<Constraint, Operators>::clear()
   rows_.clear();
   system_ = std::make_unique<internal::Constraint_system>(harmonic_dimension_, harmonic_scale_, harmonic_penalty_);
   ++version_;
+  ++rows_version_;
   solved_ = false;
 }
 
@@ -504,6 +507,14 @@ void Basic_spline_solver<Constraint, Operators>::make_report() const
       << " of the energy scale): it may be large";
     r.warnings.push_back(s.str());
   }
+  r.error_bound = relative_error_bound();
+  if(r.error_bound > error_bound_warning)
+  {
+    std::ostringstream s;
+    s << "the reduced answer may be far from the exact spline: the bound on its energy-norm error is " << r.error_bound
+      << " of the exact field's; use a larger basis, or refine to the exact spline";
+    r.warnings.push_back(s.str());
+  }
   if(!std::isfinite(r.energy))
   {
     // A finite field whose energy exceeds the largest double: report it, do not fail.
@@ -516,5 +527,7 @@ void Basic_spline_solver<Constraint, Operators>::make_report() const
 
 } // namespace Tangent_vector_fields
 } // namespace CGAL
+
+#include <CGAL/Tangent_vector_fields/internal/Spline_error_bound_impl.h>
 
 #endif
