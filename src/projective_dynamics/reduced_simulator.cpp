@@ -11,6 +11,7 @@
 
 #include "element_graph.h"
 #include "hyper_reduction.h"
+#include "scene_handles.h"
 #include "thread_pool.h"
 
 #include <Eigen/Cholesky>
@@ -31,14 +32,8 @@ typedef Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> Rows;
 typedef std::chrono::steady_clock Clock;
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-void check_options(const Simulator_options& o)
-{
-  if(!(o.time_step > 0) || !std::isfinite(o.time_step))
-    throw Invalid_input("the time step h = " + std::to_string(o.time_step) + " must be positive and finite");
-  if(o.iterations < 1) throw Invalid_input("the number of iterations per step must be at least 1, not " + std::to_string(o.iterations));
-  if(!o.gravity.allFinite()) throw Invalid_input("gravity must be finite");
-  if(o.threads < 0) throw Invalid_input("the number of threads must be >= 0 (0: all cores)");
-}
+using internal::check_options;
+using internal::Floor;
 
 void check_reduction(const Reduction_options& r, int n)
 {
@@ -61,20 +56,9 @@ void check_reduction(const Reduction_options& r, int n)
                         std::to_string(4 * r.constraint_samples) + ")");
 }
 
-int thread_count(int asked)
-{
-  const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
-  return std::min(asked == 0 ? cores : asked, 256);
-}
-
-struct Floor
-{
-  Eigen::Vector3d point, normal;
-};
-
 } // namespace
 
-struct Reduced_simulator::Impl
+struct Reduced_simulator::Impl : internal::Scene_handles
 {
   Elastic_model model;
   Simulator_options o;
@@ -92,9 +76,7 @@ struct Reduced_simulator::Impl
   // State.
   Eigen::MatrixXd a, a_dot, ext;
   bool has_ext = false;
-  std::vector<int> pinned, grabbed, collision;
-  Positions pin_targets, grab_targets;
-  std::vector<Floor> floors;
+  std::vector<int> collision;
   bool dirty = true;
   double kappa = 0;
   Eigen::LLT<Eigen::MatrixXd> K;
@@ -103,25 +85,15 @@ struct Reduced_simulator::Impl
   int factorizations = 0;
 
   Impl(Elastic_model m, const Simulator_options& options, const Reduction_options& reduction)
-    : model(std::move(m)), o(options), r(reduction), pool(thread_count(options.threads))
+    : Scene_handles(m.number_of_vertices()), model(std::move(m)), o(options), r(reduction),
+      pool(internal::thread_count(options.threads))
   {}
 
   int n() const { return model.number_of_vertices(); }
   int k() const { return int(U.cols()); }
 
-  void check_vertex(int v, const char* what) const
-  {
-    if(v < 0 || v >= n())
-      throw Invalid_input(std::string(what) + " vertex " + std::to_string(v) + " is outside [0, " + std::to_string(n()) + ")");
-  }
-  void check_rows(const Positions& x, const char* what) const
-  {
-    if(x.rows() != n())
-      throw Invalid_input(std::string(what) + ": " + std::to_string(x.rows()) + " rows for " + std::to_string(n()) + " vertices");
-    for(Eigen::Index i = 0; i < x.rows(); ++i)
-      if(!x.row(i).allFinite())
-        throw Invalid_input(std::string(what) + ": vertex " + std::to_string(i) + " has a non-finite entry (NaN or infinity)");
-  }
+  void check_vertex(int v, const char* what) const { internal::check_vertex(v, n(), what); }
+  void check_rows(const Positions& x, const char* what) const { internal::check_rows(x, n(), what); }
 
   void precompute(const Eigen::MatrixXd* rest_coordinates)
   {
@@ -463,44 +435,29 @@ void Reduced_simulator::set_external_forces(const Positions& f)
 void Reduced_simulator::set_pinned_vertices(const std::vector<int>& vertices)
 {
   for(int i : vertices) impl_->check_vertex(i, "pinned");
-  impl_->pinned = vertices;
-  impl_->pin_targets = positions_of(vertices);
+  impl_->pin(vertices, positions_of(vertices));
   impl_->dirty = true;
 }
 
 void Reduced_simulator::grab(const std::vector<int>& vertices, const Positions& targets)
 {
-  for(int i : vertices) impl_->check_vertex(i, "grabbed");
-  if(targets.rows() != Eigen::Index(vertices.size()) || !targets.allFinite())
-    throw Invalid_input("grab: " + std::to_string(targets.rows()) + " targets for " + std::to_string(vertices.size()) +
-                        " vertices, or a non-finite target");
-  impl_->grabbed = vertices;
-  impl_->grab_targets = targets;
+  impl_->Scene_handles::grab(vertices, targets);
   impl_->dirty = true;
 }
 
-void Reduced_simulator::move_grabbed(const Positions& targets)
-{
-  if(targets.rows() != Eigen::Index(impl_->grabbed.size()) || !targets.allFinite())
-    throw Invalid_input("move_grabbed: " + std::to_string(targets.rows()) + " targets for " +
-                        std::to_string(impl_->grabbed.size()) + " grabbed vertices, or a non-finite target");
-  impl_->grab_targets = targets;
-}
+void Reduced_simulator::move_grabbed(const Positions& targets) { impl_->Scene_handles::move_grabbed(targets); }
 
 void Reduced_simulator::release_grabbed()
 {
-  impl_->grabbed.clear();
-  impl_->grab_targets.resize(0, 3);
+  impl_->Scene_handles::release_grabbed();
   impl_->dirty = true;
 }
 
 void Reduced_simulator::add_floor(const Eigen::Vector3d& point, const Eigen::Vector3d& normal)
 {
-  if(!point.allFinite() || !normal.allFinite() || !(normal.norm() > 0))
-    throw Invalid_input("a floor needs a finite point and a finite non-zero normal");
-  impl_->floors.push_back({point, normal.normalized()});
+  impl_->Scene_handles::add_floor(point, normal);
 }
-void Reduced_simulator::clear_obstacles() { impl_->floors.clear(); }
+void Reduced_simulator::clear_obstacles() { impl_->Scene_handles::clear_obstacles(); }
 void Reduced_simulator::set_collision_vertices(const std::vector<int>& vertices)
 {
   for(int i : vertices) impl_->check_vertex(i, "collision");

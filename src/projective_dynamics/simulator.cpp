@@ -8,6 +8,7 @@
 
 #include <CGAL/Model_reduction/Sparse_spd_solver.h>
 
+#include "scene_handles.h"
 #include "thread_pool.h"
 
 #include <algorithm>
@@ -24,37 +25,15 @@ typedef Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> Rows;
 typedef std::chrono::steady_clock Clock;
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-void check_options(const Simulator_options& o)
-{
-  if(!(o.time_step > 0) || !std::isfinite(o.time_step))
-    throw Invalid_input("the time step h = " + std::to_string(o.time_step) + " must be positive and finite");
-  if(o.iterations < 1) throw Invalid_input("the number of iterations per step must be at least 1, not " + std::to_string(o.iterations));
-  if(!o.gravity.allFinite()) throw Invalid_input("gravity must be finite");
-  if(o.threads < 0) throw Invalid_input("the number of threads must be >= 0 (0: all cores)");
-  if(!(o.friction >= 0 && o.friction <= 1)) throw Invalid_input("the friction factor must be in [0, 1], not " + std::to_string(o.friction));
-}
-
-int thread_count(int asked)
-{
-  const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
-  return std::min(asked == 0 ? cores : asked, 256);
-}
-
-struct Floor
-{
-  Eigen::Vector3d point, normal;
-};
-struct Sphere
-{
-  Eigen::Vector3d center;
-  double radius;
-};
+using internal::check_options;
+using internal::Floor;
+using internal::Sphere;
 } // namespace
 
-struct Simulator::Impl
+struct Simulator::Impl : internal::Scene_handles
 {
   Impl(Elastic_model m, const Simulator_options& options)
-    : model(std::move(m)), o(options), pool(thread_count(options.threads))
+    : Scene_handles(m.number_of_vertices()), model(std::move(m)), o(options), pool(internal::thread_count(options.threads))
   {
     const int n = model.number_of_vertices();
     q = model.rest_positions();
@@ -66,10 +45,6 @@ struct Simulator::Impl
   Simulator_options o;
   internal::Thread_pool pool;
   Positions q, v, f_ext;
-  std::vector<int> pinned, grabbed;
-  Positions pin_targets, grab_targets;
-  std::vector<Floor> floors;
-  std::vector<Sphere> spheres;
 
   bool dirty = true;
   std::vector<int> free_index;  // per vertex: its row among the unknowns, or -1 if held
@@ -80,22 +55,8 @@ struct Simulator::Impl
   Step_timings timings;
   int factorizations = 0;
 
-  void check_vertex(int vertex, const char* what) const
-  {
-    if(vertex < 0 || vertex >= model.number_of_vertices())
-      throw Invalid_input(std::string(what) + " vertex " + std::to_string(vertex) + " is outside [0, " +
-                          std::to_string(model.number_of_vertices()) + ")");
-  }
-
-  void check_rows(const Positions& x, const char* what) const
-  {
-    if(x.rows() != model.number_of_vertices())
-      throw Invalid_input(std::string(what) + ": " + std::to_string(x.rows()) + " rows for " +
-                          std::to_string(model.number_of_vertices()) + " vertices");
-    for(Eigen::Index i = 0; i < x.rows(); ++i)
-      if(!x.row(i).allFinite())
-        throw Invalid_input(std::string(what) + ": vertex " + std::to_string(i) + " has a non-finite entry (NaN or infinity)");
-  }
+  void check_vertex(int vertex, const char* what) const { internal::check_vertex(vertex, vertices, what); }
+  void check_rows(const Positions& x, const char* what) const { internal::check_rows(x, vertices, what); }
 
   void factor()
   {
@@ -303,58 +264,41 @@ void Simulator::set_external_forces(const Positions& f)
 
 void Simulator::set_pinned_vertices(const std::vector<int>& vertices)
 {
-  for(int i : vertices) impl_->check_vertex(i, "pinned");
-  impl_->pinned = vertices;
-  impl_->pin_targets.resize(Eigen::Index(vertices.size()), 3);
-  for(std::size_t k = 0; k < vertices.size(); ++k) impl_->pin_targets.row(Eigen::Index(k)) = impl_->q.row(vertices[k]);
+  Positions targets(Eigen::Index(vertices.size()), 3);
+  for(std::size_t k = 0; k < vertices.size(); ++k)
+  {
+    impl_->check_vertex(vertices[k], "pinned");
+    targets.row(Eigen::Index(k)) = impl_->q.row(vertices[k]);
+  }
+  impl_->pin(vertices, targets);
   impl_->dirty = true;
 }
 
 void Simulator::grab(const std::vector<int>& vertices, const Positions& targets)
 {
-  for(int i : vertices) impl_->check_vertex(i, "grabbed");
-  if(targets.rows() != Eigen::Index(vertices.size()) || !targets.allFinite())
-    throw Invalid_input("grab: " + std::to_string(targets.rows()) + " targets for " + std::to_string(vertices.size()) +
-                        " vertices, or a non-finite target");
-  impl_->grabbed = vertices;
-  impl_->grab_targets = targets;
+  impl_->Scene_handles::grab(vertices, targets);
   impl_->dirty = true;
 }
 
-void Simulator::move_grabbed(const Positions& targets)
-{
-  if(targets.rows() != Eigen::Index(impl_->grabbed.size()) || !targets.allFinite())
-    throw Invalid_input("move_grabbed: " + std::to_string(targets.rows()) + " targets for " +
-                        std::to_string(impl_->grabbed.size()) + " grabbed vertices, or a non-finite target");
-  impl_->grab_targets = targets;
-}
+void Simulator::move_grabbed(const Positions& targets) { impl_->Scene_handles::move_grabbed(targets); }
 
 void Simulator::release_grabbed()
 {
-  impl_->grabbed.clear();
-  impl_->grab_targets.resize(0, 3);
+  impl_->Scene_handles::release_grabbed();
   impl_->dirty = true;
 }
 
 void Simulator::add_floor(const Eigen::Vector3d& point, const Eigen::Vector3d& normal)
 {
-  if(!point.allFinite() || !normal.allFinite() || !(normal.norm() > 0))
-    throw Invalid_input("a floor needs a finite point and a finite non-zero normal");
-  impl_->floors.push_back({point, normal.normalized()});
+  impl_->Scene_handles::add_floor(point, normal);
 }
 
 void Simulator::add_sphere(const Eigen::Vector3d& center, double radius)
 {
-  if(!center.allFinite() || !(radius > 0) || !std::isfinite(radius))
-    throw Invalid_input("a sphere obstacle needs a finite centre and a positive radius, not " + std::to_string(radius));
-  impl_->spheres.push_back({center, radius});
+  impl_->Scene_handles::add_sphere(center, radius);
 }
 
-void Simulator::clear_obstacles()
-{
-  impl_->floors.clear();
-  impl_->spheres.clear();
-}
+void Simulator::clear_obstacles() { impl_->Scene_handles::clear_obstacles(); }
 
 void Simulator::set_time_step(double h)
 {

@@ -8,6 +8,7 @@
 #ifndef CGAL_PROJECTIVE_DYNAMICS_SRC_THREAD_POOL_H
 #define CGAL_PROJECTIVE_DYNAMICS_SRC_THREAD_POOL_H
 
+#include <algorithm>
 #include <condition_variable>
 #include <exception>
 #include <functional>
@@ -18,6 +19,13 @@
 namespace CGAL {
 namespace Projective_dynamics {
 namespace internal {
+
+/// Threads for a simulator asked for `asked` (0: one per core), at most 256.
+inline int thread_count(int asked)
+{
+  const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
+  return std::min(asked == 0 ? cores : asked, 256);
+}
 
 class Thread_pool
 {

@@ -268,6 +268,17 @@ Mesh::Property_map<Face_index, Vector_3> ambient_field_map(Mesh& mesh, const std
   return map;
 }
 
+double largest_relative_difference(const std::vector<Vector_3>& a, const std::vector<Vector_3>& b)
+{
+  double d = 0, n = 0;
+  for(std::size_t f = 0; f < a.size() && f < b.size(); ++f)
+  {
+    d = std::max(d, std::sqrt((a[f] - b[f]).squared_length()));
+    n = std::max(n, std::sqrt(b[f].squared_length()));
+  }
+  return a.size() == b.size() ? d / n : HUGE_VAL;
+}
+
 Eigen::VectorXd random_field(int number_of_faces, unsigned seed)
 {
   std::mt19937 gen(seed);

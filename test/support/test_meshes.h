@@ -70,6 +70,19 @@ std::vector<Vector_3> ambient_linear_field(const Mesh& mesh, unsigned seed);
 /// The same field stored in a new face property map `f:<name>`.
 Mesh::Property_map<Face_index, Vector_3> ambient_field_map(Mesh& mesh, const std::string& name, unsigned seed);
 
+/// Largest `|a_f - b_f|` over the faces, relative to the largest `|b_f|`.
+double largest_relative_difference(const std::vector<Vector_3>& a, const std::vector<Vector_3>& b);
+/// The vectors a writer puts into a face map (`write(map)`), in face order; the map is removed after.
+template <class Write>
+std::vector<Vector_3> face_vectors(Mesh& mesh, const Write& write)
+{
+  auto map = mesh.add_property_map<Face_index, Vector_3>("f:tvf_test_vectors", Vector_3(0, 0, 0)).first;
+  write(map);
+  std::vector<Vector_3> v(map.begin(), map.end());
+  mesh.remove_property_map(map);
+  return v;
+}
+
 /// A white-noise field in frame coordinates (`2 nf` standard normal entries).
 Eigen::VectorXd random_field(int number_of_faces, unsigned seed);
 

@@ -148,6 +148,9 @@ TEST_F(Server_test, exact_answers_follow_reduced_ones)
   EXPECT_LT(exact.json.get<double>("report.residual"), 1e-9);
   const Truth truth_v = full_spline({TVF::Field_constraint::vector_in_face(f, v)}, 0);
   EXPECT_LT(largest_gap(exact, truth_v), 1e-6); // float32 on the wire: 6e-8 relative
+  // The exact answer's error bound is 0; the reduced one's is positive (60 of 640 dimensions).
+  EXPECT_EQ(exact.json.get<double>("report.error_bound"), 0.);
+  if(reduced.binary) EXPECT_GT(reduced.json.get<double>("report.error_bound"), 0.);
   if(reduced.binary) // the reduced answer came first: the reported difference is its distance
     EXPECT_NEAR(exact.json.get<double>("difference"), mass_distance(reduced, truth_v), 1e-6);
   else // the exact answer came sooner: no reduced one of this state, no difference

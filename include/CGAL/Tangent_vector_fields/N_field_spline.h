@@ -43,6 +43,7 @@ namespace Tangent_vector_fields {
 /// `N_field_operators`) are constructor arguments.
 template <class TriangleMesh>
 class N_field_spline
+  : public internal::Spline_answers<Reduced_n_field_spline_solver, Full_n_field_spline_solver, N_field_spline_solver>
 {
 public:
   typedef boost::graph_traits<TriangleMesh> GT;
@@ -164,37 +165,6 @@ public:
     return singular;
   }
 
-  /// The report of the answering spline; for a reduced one `error_bound` bounds its distance
-  /// to the exact spline.
-  const Spline_report& report() const { return spline_->report(); }
-  /// Which spline `field` answers with.
-  Spline_answer answer() const { return spline_->answer(); }
-  bool is_exact() const { return answer().exact; }
-  /// On a basis: computes the exact spline in this thread (the energy is factored at full
-  /// resolution once, then one pull-back per constraint); `cancelled` is asked between
-  /// constraints.  Nothing to do at full resolution.
-  void refine(const Refinement_progress& progress = Refinement_progress(),
-              const std::function<bool()>& cancelled = std::function<bool()>())
-  {
-    spline_->refine(progress, cancelled);
-  }
-  /// On a basis: refines on a worker thread while reduced answers keep coming at once.
-  void refine_in_background(Refinement_progress progress = Refinement_progress())
-  {
-    spline_->refine_in_background(std::move(progress));
-  }
-  /// Waits for the exact spline (at most `timeout`); true if `field` now answers exactly.
-  bool wait_until_exact(std::chrono::milliseconds timeout) { return spline_->wait_until_exact(timeout); }
-  /// Stops refining and drops the full-resolution pull-backs.
-  void stop_refining() { spline_->stop_refining(); }
-  /// Why a refinement failed (empty if none): the answer stays reduced.
-  const std::string& refinement_error() const { return spline_->refinement_error(); }
-  /// The solver `field` answers with (the reduced one until a refinement is complete).
-  const N_field_spline_solver& solver() const
-  {
-    const N_field_spline_solver* full = spline_->full();
-    return full && is_exact() ? *full : static_cast<const N_field_spline_solver&>(*spline_->reduced());
-  }
   const N_field_operators& operators() const { return *operators_; }
   /// The basis of a reduced spline (null at full resolution).
   std::shared_ptr<const N_field_basis> basis() const { return basis_; }
@@ -236,7 +206,6 @@ private:
   std::shared_ptr<internal::Mesh_adapter<TriangleMesh>> adapter_;
   std::shared_ptr<const N_field_operators> operators_;
   std::shared_ptr<const N_field_basis> basis_;
-  std::unique_ptr<Answering> spline_;
   std::function<int(vertex_descriptor)> vertex_index_;
   std::function<int(face_descriptor)> face_index_;
 };

@@ -19,6 +19,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -285,10 +286,12 @@ private:
   };
   mutable Value_edit_cache edit_cache_;
   // The small system of the error bound (the rows' Gram matrix enlarged by the bound on their
-  // part outside the basis), kept while the rows stay (value edits do not change it).
-  long rows_version_ = 0; // counts changes of the rows (not of their values)
-  mutable long bound_version_ = -1;
+  // part outside the basis), grown with the rows appended since and rebuilt only when rows were
+  // dropped (value edits do not change it).
+  long rows_dropped_ = 0; // counts removals of rows (remove, clear, a new energy)
+  mutable long bound_dropped_ = -1;
   mutable std::unique_ptr<internal::Constraint_system> bound_system_;
+  mutable std::vector<std::vector<std::pair<int, double>>> bound_entries_; // the rows' entries, sorted
   int harmonic_dimension_;
   mutable bool solved_ = false, reported_ = false;
   mutable Eigen::VectorXd solution_;

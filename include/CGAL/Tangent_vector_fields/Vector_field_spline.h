@@ -50,6 +50,7 @@ namespace Tangent_vector_fields {
 /// onto the face plane and clamped into the face.
 template <class TriangleMesh>
 class Vector_field_spline
+  : public internal::Spline_answers<Reduced_spline_solver, Full_spline_solver, Spline_solver>
 {
 public:
   typedef boost::graph_traits<TriangleMesh> GT;
@@ -160,42 +161,6 @@ public:
   {
     operators_.from_frame_coordinates(spline_->field(which), out);
   }
-  /// The report of the answering spline; for a reduced one `error_bound` bounds its distance
-  /// to the exact spline.
-  const Spline_report& report() const { return spline_->report(); }
-  /// Which spline `field` answers with.
-  Spline_answer answer() const { return spline_->answer(); }
-  bool is_exact() const { return answer().exact; }
-
-  /// On a basis: computes the exact spline in this thread (the first call factors nothing new:
-  /// the basis' Hodge solver is reused; each constraint costs one pull-back at full resolution).
-  /// `cancelled` is asked between constraints.  Nothing to do at full resolution.
-  /// 	hrows Infeasible_constraints as `Refining_spline_solver::refine`.
-  void refine(const Refinement_progress& progress = Refinement_progress(),
-              const std::function<bool()>& cancelled = std::function<bool()>())
-  {
-    spline_->refine(progress, cancelled);
-  }
-  /// On a basis: refines on a worker thread, also every constraint added or moved later, while
-  /// the reduced answers keep coming at once; `field` turns exact when the worker is done.
-  void refine_in_background(Refinement_progress progress = Refinement_progress())
-  {
-    spline_->refine_in_background(std::move(progress));
-  }
-  /// Waits for the exact spline (at most `timeout`); true if `field` now answers exactly.
-  bool wait_until_exact(std::chrono::milliseconds timeout) { return spline_->wait_until_exact(timeout); }
-  /// Stops refining and drops the full-resolution pull-backs (one field per row).
-  void stop_refining() { spline_->stop_refining(); }
-  /// Why a refinement failed (empty if none): the answer stays reduced.
-  const std::string& refinement_error() const { return spline_->refinement_error(); }
-
-  /// The solver `field` answers with (the reduced one until a refinement is complete).
-  const Spline_solver& solver() const
-  {
-    const Spline_solver* full = spline_->full();
-    return full && is_exact() ? *full : static_cast<const Spline_solver&>(*spline_->reduced());
-  }
-
 private:
   template <class NamedParameters>
   static Spline_options options(const NamedParameters& np)
@@ -228,7 +193,6 @@ private:
   typedef internal::Answering_spline<Reduced_spline_solver, Full_spline_solver> Answering;
 
   Discrete_operators<TriangleMesh> operators_; // shares the basis' mesh data and matrices
-  std::unique_ptr<Answering> spline_;
   std::function<int(vertex_descriptor)> vertex_index_;
   std::function<int(edge_descriptor)> edge_index_;
   std::function<int(face_descriptor)> face_index_;

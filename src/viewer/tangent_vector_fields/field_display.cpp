@@ -146,6 +146,7 @@ void Field_session::send_field(Request& r, bool refined)
                         json_array(design_->ids(), [](int i) { return std::to_string(i); }) +
                         ",\"report\":{\"residual\":" + number(report.constraint_residual) +
                         ",\"undetermined_harmonic\":" + std::to_string(report.undetermined_harmonic) +
+                        ",\"error_bound\":" + number(report.error_bound) +
                         ",\"warnings\":" + warnings + "},\"magnitude_max\":" + number(magnitude_max) +
                         ",\"scalar_range\":[" + number(scalar_min) + "," + number(scalar_max) + "]" +
                         ",\"scalar_on\":\"" + (design_->n() == 1 ? "vertices" : "faces") + "\"" +

@@ -306,27 +306,13 @@ TEST(RefiningSpline, GenericSplineGivesTheExactAnswerOnRequestAndInTheBackground
   std::vector<TVF::Field_constraint> constraints = mixed_constraints(m, 3, 9);
   spline.add(constraints);
   auto field_of = [&](auto& s, TVF::Spline_answer* which) {
-    auto out = mesh.add_property_map<Face_index, Vector_3>("f:answer", Vector_3(0, 0, 0)).first;
-    s.field(out, which);
-    std::vector<Vector_3> v(out.begin(), out.end());
-    mesh.remove_property_map(out);
-    return v;
+    return face_vectors(mesh, [&](auto map) { s.field(map, which); });
   };
   auto exact_of = [&](const std::vector<TVF::Field_constraint>& c) {
-    auto out = mesh.add_property_map<Face_index, Vector_3>("f:exact", Vector_3(0, 0, 0)).first;
-    TVF::vector_field_spline(mesh, c, out, TVF::parameters::spline_tension(1.0));
-    std::vector<Vector_3> v(out.begin(), out.end());
-    mesh.remove_property_map(out);
-    return v;
+    return face_vectors(mesh, [&](auto map) { TVF::vector_field_spline(mesh, c, map, TVF::parameters::spline_tension(1.0)); });
   };
   auto difference = [](const std::vector<Vector_3>& a, const std::vector<Vector_3>& b) {
-    double d = 0, n = 0;
-    for(std::size_t f = 0; f < a.size(); ++f)
-    {
-      d = std::max(d, std::sqrt((a[f] - b[f]).squared_length()));
-      n = std::max(n, std::sqrt(b[f].squared_length()));
-    }
-    return d / n;
+    return largest_relative_difference(a, b);
   };
   TVF::Spline_answer which;
   const std::vector<Vector_3> reduced = field_of(spline, &which);

@@ -128,3 +128,41 @@ TEST(SplineErrorBound, BoundsTheMeasuredErrorOnEveryTopology)
   EXPECT_LT(ratios[ratios.size() / 2], 4.);
   EXPECT_LT(ratios.back(), 25.);
 }
+
+// The bound is kept between reports and grown as rows are appended (rebuilt when rows are
+// dropped): after every kind of edit it equals the bound of a fresh solver of the same
+// constraints, and value edits change it as they change the spline.
+TEST(SplineErrorBound, KeptThroughEditsAsAFreshSolverComputesIt)
+{
+  const Design_setup s = setup(make_torus(14, 8), 60);
+  const std::vector<TVF::Field_constraint> constraints = mixed_constraints(s.ops->mesh(), 4, 3);
+  TVF::Spline_options options;
+  options.omega = 1;
+  TVF::Reduced_spline_solver edited(s.basis, 0, options);
+  std::vector<TVF::Constraint_id> ids;
+  auto fresh_bound = [&](const std::vector<TVF::Field_constraint>& set) {
+    TVF::Reduced_spline_solver fresh(s.basis, 0, options);
+    fresh.add(set);
+    return fresh.report().error_bound;
+  };
+  std::vector<TVF::Field_constraint> set;
+  for(const TVF::Field_constraint& c : constraints)
+  {
+    ids.push_back(edited.add(c));
+    set.push_back(c);
+    // Rounding: the same small systems built in another order of appends, 1e-9 relative.
+    EXPECT_NEAR(edited.report().error_bound, fresh_bound(set), 1e-9 * fresh_bound(set)) << set.size() << " constraints";
+  }
+  edited.remove(ids[1]);
+  set.erase(set.begin() + 1);
+  EXPECT_NEAR(edited.report().error_bound, fresh_bound(set), 1e-9 * fresh_bound(set)) << "after a removal";
+  // A value edit (same rows, other values): the kept system serves it.
+  TVF::Field_constraint moved = set.front();
+  moved.vector = {{2 * moved.vector[0], -moved.vector[1], 0.5 * moved.vector[2]}};
+  edited.change(ids[0], moved);
+  set.front() = moved;
+  EXPECT_NEAR(edited.report().error_bound, fresh_bound(set), 1e-9 * fresh_bound(set)) << "after a value edit";
+  edited.set_omega(3);
+  options.omega = 3;
+  EXPECT_NEAR(edited.report().error_bound, fresh_bound(set), 1e-9 * fresh_bound(set)) << "after a new tension";
+}

@@ -275,27 +275,13 @@ TEST(NFieldSplineTruth, GenericNFieldSplineGivesTheExactAnswerOnRequest)
   std::vector<TVF::N_field_constraint> constraints = random_vector_constraints(spline.operators().mesh(), 5, 31);
   spline.add(constraints);
   auto field_of = [&](TVF::Spline_answer* which) {
-    auto out = torus.add_property_map<Face_index, Vector_3>("f:answer", Vector_3(0, 0, 0)).first;
-    spline.field(out, false, which);
-    std::vector<Vector_3> v(out.begin(), out.end());
-    torus.remove_property_map(out);
-    return v;
+    return face_vectors(torus, [&](auto map) { spline.field(map, false, which); });
   };
   auto exact_of = [&](const std::vector<TVF::N_field_constraint>& c) {
-    auto out = torus.add_property_map<Face_index, Vector_3>("f:exact", Vector_3(0, 0, 0)).first;
-    TVF::n_field_spline(torus, 4, c, out, TVF::parameters::spline_tension(2.0));
-    std::vector<Vector_3> v(out.begin(), out.end());
-    torus.remove_property_map(out);
-    return v;
+    return face_vectors(torus, [&](auto map) { TVF::n_field_spline(torus, 4, c, map, TVF::parameters::spline_tension(2.0)); });
   };
   auto difference = [](const std::vector<Vector_3>& a, const std::vector<Vector_3>& b) {
-    double d = 0, n = 0;
-    for(std::size_t f = 0; f < a.size(); ++f)
-    {
-      d = std::max(d, std::sqrt((a[f] - b[f]).squared_length()));
-      n = std::max(n, std::sqrt(b[f].squared_length()));
-    }
-    return d / n;
+    return largest_relative_difference(a, b);
   };
   TVF::Spline_answer which;
   const std::vector<Vector_3> reduced = field_of(&which);

@@ -14,6 +14,7 @@
 #include <chrono>
 #include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace CGAL {
@@ -85,6 +86,53 @@ private:
   std::unique_ptr<Full> full_;
   std::unique_ptr<Refining> refining_;
   const std::string no_error_;
+};
+
+/// The members of `Vector_field_spline` and `N_field_spline` that say which spline answers
+/// and ask for the exact one.  `Solver` is the solvers' common base (`Spline_solver`,
+/// `N_field_spline_solver`).
+template <class Reduced, class Full, class Solver>
+class Spline_answers
+{
+public:
+  /// The report of the answering spline; for a reduced one `error_bound` bounds its distance
+  /// to the exact spline.
+  const Spline_report& report() const { return spline_->report(); }
+  /// Which spline `field` answers with.
+  Spline_answer answer() const { return spline_->answer(); }
+  bool is_exact() const { return answer().exact; }
+
+  /// On a basis: computes the exact spline in this thread, one pull-back at full resolution per
+  /// constraint (the energy is factored once, or taken from the basis where it has it);
+  /// `cancelled` is asked between constraints.  Nothing to do at full resolution.
+  /// \throws Infeasible_constraints as `Basic_refining_spline_solver::refine`.
+  void refine(const Refinement_progress& progress = Refinement_progress(),
+              const std::function<bool()>& cancelled = std::function<bool()>())
+  {
+    spline_->refine(progress, cancelled);
+  }
+  /// On a basis: refines on a worker thread, also every constraint added or moved later, while
+  /// the reduced answers keep coming at once; `field` turns exact when the worker is done.
+  void refine_in_background(Refinement_progress progress = Refinement_progress())
+  {
+    spline_->refine_in_background(std::move(progress));
+  }
+  /// Waits for the exact spline (at most `timeout`); true if `field` now answers exactly.
+  bool wait_until_exact(std::chrono::milliseconds timeout) { return spline_->wait_until_exact(timeout); }
+  /// Stops refining and drops the full-resolution pull-backs (one field per row).
+  void stop_refining() { spline_->stop_refining(); }
+  /// Why a refinement failed (empty if none): the answer stays reduced.
+  const std::string& refinement_error() const { return spline_->refinement_error(); }
+
+  /// The solver `field` answers with (the reduced one until a refinement is complete).
+  const Solver& solver() const
+  {
+    const Solver* full = spline_->full();
+    return full && is_exact() ? *full : static_cast<const Solver&>(*spline_->reduced());
+  }
+
+protected:
+  std::unique_ptr<Answering_spline<Reduced, Full>> spline_;
 };
 
 } // namespace internal

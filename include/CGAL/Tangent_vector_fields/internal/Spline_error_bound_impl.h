@@ -26,7 +26,7 @@
 // Both energies are values of the small system, mu.c (with the harmonic part, free or with the
 // ridge kappa |z|^2, eliminated as the solver eliminates it).  Cost: the rows' Gram matrix on
 // the basis, O(rows^2 d), once per change of the rows (value edits keep it), and two small
-// solves per report.
+// solves per report; a new row adds O(rows d).
 
 #include <algorithm>
 #include <cmath>
@@ -82,24 +82,35 @@ double Basic_spline_solver<Constraint, Operators>::relative_error_bound() const
   const double lowest = lowest_missing_energy();
   if(!(lowest > 0)) return std::numeric_limits<double>::quiet_NaN();
   if(lowest == std::numeric_limits<double>::infinity()) return 0; // nothing is missing: exact
-  if(!bound_system_ || bound_version_ != rows_version_)
+  if(!bound_system_ || bound_dropped_ != rows_dropped_)
   {
+    // Rows were dropped (or the energy changed): start again.
+    bound_system_ =
+        std::make_unique<internal::Constraint_system>(harmonic_dimension_, harmonic_scale_, harmonic_penalty_);
+    bound_entries_.clear();
+    bound_dropped_ = rows_dropped_;
+  }
+  if(bound_system_->size() < n)
+  {
+    // Only appended rows are new: the earlier ones and their entries are kept.
     const Eigen::VectorXd masses = field_masses();
-    std::vector<std::vector<std::pair<int, double>>> rows(n);
-    for(int i = 0; i < n; ++i)
+    for(int i = bound_system_->size(); i < n; ++i)
     {
-      rows[i] = internal::sorted_entries(rows_[i].row);
-      for(const auto& e : rows[i])
-        if(!(masses[e.first] > 0)) return std::numeric_limits<double>::quiet_NaN(); // a face without area
+      bound_entries_.push_back(internal::sorted_entries(rows_[i].row));
+      for(const auto& e : bound_entries_.back())
+        if(!(masses[e.first] > 0))
+        {
+          bound_system_.reset(); // a face without area: unknown, and the system incomplete
+          return std::numeric_limits<double>::quiet_NaN();
+        }
     }
     // The part of r_i MX^-1 r_j^T outside the basis, over the lowest missing energy.
     auto outside = [&](int i, int j) {
-      return (internal::mass_inverse_product(rows[i], rows[j], masses) - represented_product(rows_[i], rows_[j])) /
+      return (internal::mass_inverse_product(bound_entries_[i], bound_entries_[j], masses) -
+              represented_product(rows_[i], rows_[j])) /
              lowest;
     };
-    bound_system_ =
-        std::make_unique<internal::Constraint_system>(harmonic_dimension_, harmonic_scale_, harmonic_penalty_);
-    for(int j = 0; j < n; ++j)
+    for(int j = bound_system_->size(); j < n; ++j)
     {
       Eigen::VectorXd k(j);
       for(int i = 0; i < j; ++i) k[i] = apply(rows_[i], rows_[j].y) + outside(i, j);
@@ -107,7 +118,6 @@ double Basic_spline_solver<Constraint, Operators>::relative_error_bound() const
       const double kappa = apply(rows_[j], rows_[j].y) + std::max(0., outside(j, j));
       bound_system_->append(k, kappa, rows_[j].harmonic);
     }
-    bound_version_ = rows_version_;
   }
   // Values scaled to at most 1 (a power of two), as `solve` scales them: the ratio is scale-free.
   Eigen::VectorXd c(n);

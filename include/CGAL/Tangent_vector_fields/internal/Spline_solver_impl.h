@@ -191,7 +191,6 @@ void Basic_spline_solver<Constraint, Operators>::append(Prepared& prepared, cons
     system_->append(k, kappa, rows[j].harmonic);
     rows_.push_back(std::move(rows[j]));
   }
-  ++rows_version_;
   int row = first;
   for(std::size_t i = 0; i < constraints.size(); ++i)
   {
@@ -249,7 +248,7 @@ void Basic_spline_solver<Constraint, Operators>::remove(Constraint_id id)
   for(auto& e : entries_)
     if(e.second.first_row > first) e.second.first_row -= count;
   ++version_;
-  ++rows_version_;
+  ++rows_dropped_;
   solved_ = false;
 }
 
@@ -260,7 +259,7 @@ void Basic_spline_solver<Constraint, Operators>::clear()
   rows_.clear();
   system_ = std::make_unique<internal::Constraint_system>(harmonic_dimension_, harmonic_scale_, harmonic_penalty_);
   ++version_;
-  ++rows_version_;
+  ++rows_dropped_;
   solved_ = false;
 }
 
@@ -290,6 +289,7 @@ void Basic_spline_solver<Constraint, Operators>::set_omega(double omega)
             [](const auto& a, const auto& b) { return a.second.first_row < b.second.first_row; });
   entries_.clear();
   rows_.clear();
+  ++rows_dropped_;
   system_ = std::make_unique<internal::Constraint_system>(harmonic_dimension_, harmonic_scale_, harmonic_penalty_);
   std::vector<Constraint> constraints;
   std::vector<Constraint_id> ids;

@@ -211,6 +211,11 @@ export class Panel {
     const report = header.report || {};
     const lines = [`${header.solver} solver, ${header.basis_size} eigenfields, ω = ${number(header.omega)}`,
       `constraint residual ${number(report.residual)}, max |v| ${number(header.magnitude_max)}`];
+    if (!(header.answer && header.answer.exact)) {
+      lines.push(report.error_bound === null || report.error_bound === undefined
+        ? 'error bound: none known'
+        : `error bound: ${number(report.error_bound)} of the exact field (energy norm, guaranteed)`);
+    }
     if (header.difference !== undefined) {
       lines.push(`reduced vs exact: ${number(header.difference)} (rel. L2), largest angle ${number(header.largest_angle_deg)}°`);
     }
