@@ -43,10 +43,10 @@ Spline_fit penalty_decomposition_stage(const Problem& p, double lambda)
   // Without a penalty keeping every knot is optimal: the squared error never grows with the knot set.
   if(lambda == 0 || m == 0) return finish(p, all, lambda);
 
-  const Eigen::VectorXd U = clamped_knots(p.candidates, k);
-  const Band_rows A = design_rows(U, k, p.t), J = jump_rows(U, k);
-  const Eigen::Index n_ctrl = U.size() - k - 1;
-  Banded_spd AtA(n_ctrl, k + 1), JtJ(n_ctrl, k + 1);
+  const Basis basis = make_basis(p.candidates, k, p.closed);
+  const Band_rows A = design_rows(basis, p.t), J = jump_rows(basis);
+  const Eigen::Index n_ctrl = basis.controls;
+  Spd_matrix AtA(n_ctrl, k + 1, p.closed), JtJ(n_ctrl, k + 1, p.closed);
   AtA.add_gram(A, 1.0);
   JtJ.add_gram(J, 1.0);
   Eigen::MatrixXd AtP = Eigen::MatrixXd::Zero(n_ctrl, P.cols());
@@ -56,7 +56,7 @@ Spline_fit penalty_decomposition_stage(const Problem& p, double lambda)
   // the samples); at 1e10, J X is within 1e-10 of Y and no threshold decision can change.
   const double scale = AtA.max_diagonal();
   auto solve = [&](double beta, const Eigen::MatrixXd& Y) {
-    Banded_spd M = AtA.plus(JtJ, beta);
+    Spd_matrix M = AtA.plus(JtJ, beta);
     if(!M.factor(1e-15)) throw Numerical_failure("penalty decomposition: A^T A + beta J^T J is not positive definite");
     Eigen::MatrixXd rhs = AtP;
     J.add_transpose_times(Y, beta, rhs);
@@ -73,7 +73,7 @@ Spline_fit penalty_decomposition_stage(const Problem& p, double lambda)
   std::vector<char> kept(static_cast<std::size_t>(m), 0);
   int settled = 0;
   for(; beta <= 1e10 * scale; beta *= 2) {
-    Banded_spd M = AtA.plus(JtJ, beta);
+    Spd_matrix M = AtA.plus(JtJ, beta);
     if(!M.factor(1e-15)) throw Numerical_failure("penalty decomposition: A^T A + beta J^T J is not positive definite");
     bool changed = false;
     for(int inner = 0; inner < 4; ++inner) { // a few alternations per beta; usually one settles it
