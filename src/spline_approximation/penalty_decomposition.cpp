@@ -18,7 +18,7 @@
 // least-squares fit on fewer knots must bend at them), so at the next, larger lambda the
 // survivors are compared with the threshold at their grown size: the same mechanism that makes
 // greedy removal work, with the penalty decomposition deciding each stage.  Stages only remove
-// knots, so the knot sets are nested and the total work is about twice the first stage's.
+// knots, so the knot sets are nested and later stages are cheaper than the first.
 
 #include <CGAL/Spline_approximation/internal/spline_numerics.h>
 
@@ -120,6 +120,24 @@ Problem restricted(const Problem& p, const std::vector<std::size_t>& kept)
   return q;
 }
 
+// Where the continuation starts.  A stage's first beta is at least 1e-6 max diag(A^T A), so its
+// first threshold is at most lambda_s / that; below the median squared jump of the full
+// least-squares fit times that beta, the first stage keeps about half the candidates or more
+// and cannot collapse (a fixed fraction of the target lambda cannot promise it: on 2000 dense
+// samples of a smooth curve, lambda / 4^6 still lost every knot at lambda = 0.1).
+double starting_lambda(const Problem& p, const Spline_fit& full)
+{
+  const Basis basis = make_basis(p.candidates, p.degree, p.closed);
+  const Band_rows A = design_rows(basis, p.t);
+  Eigen::VectorXd diagonal = Eigen::VectorXd::Zero(basis.controls);
+  for(Eigen::Index r = 0; r < A.rows(); ++r)
+    for(Eigen::Index q = 0; q < A.values.cols(); ++q) diagonal[A.column(r, q)] += A.values(r, q) * A.values(r, q);
+  Eigen::VectorXd z2 = jump_rows(basis).times(full.spline.control_points).rowwise().squaredNorm();
+  if(z2.size() == 0) return 0;
+  std::nth_element(z2.data(), z2.data() + z2.size() / 2, z2.data() + z2.size());
+  return 1e-6 * diagonal.maxCoeff() * z2[z2.size() / 2];
+}
+
 } // namespace
 
 Spline_fit penalty_decomposition(const Problem& p, double lambda)
@@ -127,22 +145,24 @@ Spline_fit penalty_decomposition(const Problem& p, double lambda)
   std::vector<std::size_t> all(static_cast<std::size_t>(p.candidates.size()));
   for(std::size_t i = 0; i < all.size(); ++i) all[i] = i;
   if(lambda == 0 || all.empty()) return finish(p, all, lambda);
-  // The schedule: lambda / 4^6 (4096 times below the target: measured on smooth noisy curves,
-  // the first stage then keeps most candidates) to lambda by factors of 4 (small enough that a
-  // stage removes a fraction of the knots, not all of them).
-  const int stages = 7;
-  const double ratio = 4;
-  std::vector<std::size_t> kept = all;
   Goal goal;
   goal.lambda = lambda;
   Spline_fit best = finish(p, all, lambda);
-  for(int s = stages - 1; s >= 0 && !kept.empty(); --s) {
+  // The schedule: from lambda / 4^6 (or lower, where the data asks for it: starting_lambda) up to
+  // lambda by factors of at least 4 (small enough that a stage removes a fraction of the knots,
+  // not all of them), in at most 12 stages (the factor grows beyond 4 for a range past 4^12).
+  const double lambda_0 = std::max(1e-18 * lambda, std::min(lambda / 4096, starting_lambda(p, best)));
+  const int stages = std::min(12, int(std::ceil(std::log(lambda / lambda_0) / std::log(4.0) - 1e-9)));
+  const double ratio = std::pow(lambda / lambda_0, 1.0 / double(stages));
+  std::vector<std::size_t> kept = all;
+  for(int s = stages; s >= 0 && !kept.empty(); --s) {
     const double lambda_s = lambda * std::pow(ratio, -double(s));
     const Spline_fit stage = penalty_decomposition_stage(restricted(p, kept), lambda_s);
     std::vector<std::size_t> next;
     for(std::size_t i : stage.kept) next.push_back(kept[i]);
     kept = std::move(next);
-    // Every stage's knots are a candidate answer at the target lambda (usually the last wins).
+    // Every stage's knots are a candidate answer at the target lambda (usually the last wins;
+    // when a late stage collapses, an earlier one does).
     Spline_fit at_target = finish(p, kept, lambda);
     if(better(at_target, best, goal)) best = std::move(at_target);
   }
