@@ -96,6 +96,20 @@ inline Eigen::MatrixXd noisy_curve(Eigen::Index n, unsigned seed, double noise =
   return P;
 }
 
+// A noisy rose-like planar curve with n samples (the benchmark's): smooth and densely sampled.
+inline Eigen::MatrixXd noisy_rose(Eigen::Index n, double noise, unsigned seed = 1)
+{
+  std::mt19937 gen(seed);
+  std::normal_distribution<double> g(0.0, noise);
+  Eigen::MatrixXd P(n, 2);
+  for(Eigen::Index j = 0; j < n; ++j) {
+    const double s = 3.0 * double(j) / double(n - 1), r = std::cos(2 * s) + 0.2 * s;
+    P(j, 0) = r * std::cos(s) + g(gen);
+    P(j, 1) = r * std::sin(s) + g(gen);
+  }
+  return P;
+}
+
 } // namespace spline_test
 
 #endif
