@@ -13,7 +13,8 @@
 //   4. error against knot count along a sweep of lambda.
 //
 // Usage: bench_spline_approximation [--sizes 1000,10000,...] [--rms 0.002] [--max-error 0.005]
-//                                   [--noise 0.0005] [--sweep-size 2000]
+//                                   [--noise 0.0005] [--sweep-size 2000] [--tables 1234]
+//                                   [--algorithms penalty,greedy] [--help]
 
 #include <CGAL/Spline_approximation/Spline_fit.h>
 
@@ -121,6 +122,15 @@ int main(int argc, char** argv)
   std::vector<Eigen::Index> sizes = {1000, 10000, 100000, 1000000};
   double rms = 0.002, max_error = 0.005, noise = 0.0005;
   Eigen::Index sweep_size = 2000;
+  std::string tables = "1234", algorithm_names = "penalty,greedy";
+  for(int i = 1; i < argc; ++i)
+    if(std::string(argv[i]) == "--help") {
+      std::printf("bench_spline_approximation [--sizes 1000,10000,100000,1000000] [--rms 0.002] [--max-error 0.005]\n"
+                  "  [--noise 0.0005] [--sweep-size 2000] [--tables 1234] [--algorithms penalty,greedy]\n"
+                  "tables: 1 cubic within an RMS bound against uniform knots, 2 degree 1 within a max error against\n"
+                  "Douglas-Peucker, 3 gap to the exact optimum, 4 lambda sweep; algorithms: the heuristics run in 1, 2, 4\n");
+      return 0;
+    }
   for(int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i], v = argv[i + 1];
     if(a == "--sizes") sizes = parse_sizes(v);
@@ -128,88 +138,102 @@ int main(int argc, char** argv)
     else if(a == "--max-error") max_error = std::atof(v.c_str());
     else if(a == "--noise") noise = std::atof(v.c_str());
     else if(a == "--sweep-size") sweep_size = Eigen::Index(std::atoll(v.c_str()));
+    else if(a == "--tables") tables = v;
+    else if(a == "--algorithms") algorithm_names = v;
     else { std::fprintf(stderr, "unknown option %s\n", a.c_str()); return 2; }
   }
   std::printf("curves: noisy rose, noise sigma %g per coordinate; candidates: every sample\n\n", noise);
+  std::vector<SA::Fit_algorithm> heuristics;
+  for(SA::Fit_algorithm a : {SA::Fit_algorithm::penalty_decomposition, SA::Fit_algorithm::greedy_removal})
+    if(algorithm_names.find(SA::algorithm_name(a)) != std::string::npos) heuristics.push_back(a);
+  auto table = [&](char c) { return tables.find(c) != std::string::npos; };
 
-  std::printf("1. cubic within RMS %g: knots and time per algorithm, and least squares on uniform knots\n", rms);
-  std::printf("%9s | %-8s %7s %10s %10s %9s | %8s %10s %9s | %s\n", "samples", "algo", "knots", "rms", "max", "seconds",
-              "uniform", "rms", "seconds", "uniform/knots");
-  for(Eigen::Index n : sizes) {
-    const Eigen::MatrixXd P = curve(n, noise);
-    const Eigen::VectorXd t = SA::chord_length_parameters(P);
-    const auto t0 = std::chrono::steady_clock::now();
-    const auto [g, g_rms] = uniform_knots_for(P, t, rms);
-    const double g_seconds = seconds_since(t0);
-    for(SA::Fit_algorithm a : {SA::Fit_algorithm::penalty_decomposition, SA::Fit_algorithm::greedy_removal}) {
-      SA::Fit_options o = options(3, a);
-      o.rms_error = rms;
-      const SA::Spline_fit f = SA::fit_spline(P, t, o);
-      std::printf("%9lld | %-8s %7zu %10.3e %10.3e %9.3f | %8zu %10.3e %9.3f | %.2fx\n", (long long)n,
-                  SA::algorithm_name(a), f.number_of_knots(), f.rms_error, f.max_error, f.seconds, g, g_rms, g_seconds,
-                  double(g) / double(std::max<std::size_t>(1, f.number_of_knots())));
-    }
-  }
-
-  std::printf("\n2. degree 1 within max error %g: vertices (knots + 2) against Douglas-Peucker\n", max_error);
-  std::printf("%9s | %-8s %9s %10s %9s | %9s %9s | %s\n", "samples", "algo", "vertices", "max", "seconds", "DP verts",
-              "seconds", "saving");
-  for(Eigen::Index n : sizes) {
-    const Eigen::MatrixXd P = curve(n, noise);
-    const auto t0 = std::chrono::steady_clock::now();
-    const std::size_t dp_vertices = douglas_peucker(P, max_error);
-    const double dp_seconds = seconds_since(t0);
-    for(SA::Fit_algorithm a : {SA::Fit_algorithm::penalty_decomposition, SA::Fit_algorithm::greedy_removal}) {
-      SA::Fit_options o = options(1, a);
-      o.max_error = max_error;
-      const SA::Spline_fit f = SA::fit_spline(P, o);
-      const std::size_t v = f.number_of_knots() + 2;
-      std::printf("%9lld | %-8s %9zu %10.3e %9.3f | %9zu %9.3f | %+.1f %%\n", (long long)n, SA::algorithm_name(a), v,
-                  f.max_error, f.seconds, dp_vertices, dp_seconds, 100.0 * (1.0 - double(v) / double(dp_vertices)));
-    }
-  }
-
-  std::printf("\n3. gap to the exact optimum (penalty mode, objective |AX-P|^2 + lambda #knots)\n");
-  std::printf("%-28s %8s | %-8s %7s %12s %9s %8s\n", "problem", "lambda", "algo", "knots", "objective", "seconds", "gap");
-  struct Exact_case { int degree; Eigen::Index samples; std::size_t grid; SA::Fit_algorithm exact; };
-  const Exact_case cases[] = {{1, 1000, 20, SA::Fit_algorithm::dynamic_programming},
-                              {1, 1000, 14, SA::Fit_algorithm::brute_force},
-                              {3, 1000, 14, SA::Fit_algorithm::brute_force}};
-  for(const Exact_case& c : cases) {
-    const Eigen::MatrixXd P = curve(c.samples, noise);
-    for(double lambda : {1e-3, 1e-2, 1e-1}) {
-      SA::Fit_options o = options(c.degree, c.exact);
-      o.penalty = lambda;
-      o.candidate_grid_size = c.grid;
-      SA::Spline_fit best;
-      try {
-        best = SA::fit_spline(P, o);
-      } catch(const SA::Invalid_input& e) {
-        std::printf("degree %d, %lld samples, %zu cand. %8g | not computable: %s\n", c.degree, (long long)c.samples,
-                    c.grid, lambda, e.what());
-        continue;
-      }
-      char problem[64];
-      std::snprintf(problem, sizeof problem, "degree %d, %lld samples, %zu cand.", c.degree, (long long)c.samples, c.grid);
-      for(SA::Fit_algorithm a : {c.exact, SA::Fit_algorithm::penalty_decomposition, SA::Fit_algorithm::greedy_removal}) {
-        o.algorithm = a;
-        const SA::Spline_fit f = a == c.exact ? best : SA::fit_spline(P, o);
-        std::printf("%-28s %8g | %-8s %7zu %12.6e %9.4f %+7.2f%%\n", problem, lambda, SA::algorithm_name(a),
-                    f.number_of_knots(), f.objective, f.seconds, 100.0 * (f.objective / best.objective - 1.0));
+  if(table('1')) {
+    std::printf("1. cubic within RMS %g: knots and time per algorithm, and least squares on uniform knots\n", rms);
+    std::printf("%9s | %-8s %7s %10s %10s %9s | %8s %10s %9s | %s\n", "samples", "algo", "knots", "rms", "max", "seconds",
+                "uniform", "rms", "seconds", "uniform/knots");
+    for(Eigen::Index n : sizes) {
+      const Eigen::MatrixXd P = curve(n, noise);
+      const Eigen::VectorXd t = SA::chord_length_parameters(P);
+      const auto t0 = std::chrono::steady_clock::now();
+      const auto [g, g_rms] = uniform_knots_for(P, t, rms);
+      const double g_seconds = seconds_since(t0);
+      for(SA::Fit_algorithm a : heuristics) {
+        SA::Fit_options o = options(3, a);
+        o.rms_error = rms;
+        const SA::Spline_fit f = SA::fit_spline(P, t, o);
+        std::printf("%9lld | %-8s %7zu %10.3e %10.3e %9.3f | %8zu %10.3e %9.3f | %.2fx\n", (long long)n,
+                    SA::algorithm_name(a), f.number_of_knots(), f.rms_error, f.max_error, f.seconds, g, g_rms, g_seconds,
+                    double(g) / double(std::max<std::size_t>(1, f.number_of_knots())));
       }
     }
   }
 
-  std::printf("\n4. error against knot count, cubic, %lld samples, lambda sweep\n", (long long)sweep_size);
-  std::printf("%10s | %-8s %7s %10s %10s %9s\n", "lambda", "algo", "knots", "rms", "max", "seconds");
-  const Eigen::MatrixXd S = curve(sweep_size, noise);
-  for(double lambda : {1e-1, 1e-2, 1e-3, 1e-4, 1e-5})
-    for(SA::Fit_algorithm a : {SA::Fit_algorithm::penalty_decomposition, SA::Fit_algorithm::greedy_removal}) {
-      SA::Fit_options o = options(3, a);
-      o.penalty = lambda;
-      const SA::Spline_fit f = SA::fit_spline(S, o);
-      std::printf("%10g | %-8s %7zu %10.3e %10.3e %9.3f\n", lambda, SA::algorithm_name(a), f.number_of_knots(),
-                  f.rms_error, f.max_error, f.seconds);
+  if(table('2')) {
+    std::printf("\n2. degree 1 within max error %g: vertices (knots + 2) against Douglas-Peucker\n", max_error);
+    std::printf("%9s | %-8s %9s %10s %9s | %9s %9s | %s\n", "samples", "algo", "vertices", "max", "seconds", "DP verts",
+                "seconds", "saving");
+    for(Eigen::Index n : sizes) {
+      const Eigen::MatrixXd P = curve(n, noise);
+      const auto t0 = std::chrono::steady_clock::now();
+      const std::size_t dp_vertices = douglas_peucker(P, max_error);
+      const double dp_seconds = seconds_since(t0);
+      for(SA::Fit_algorithm a : heuristics) {
+        SA::Fit_options o = options(1, a);
+        o.max_error = max_error;
+        const SA::Spline_fit f = SA::fit_spline(P, o);
+        const std::size_t v = f.number_of_knots() + 2;
+        std::printf("%9lld | %-8s %9zu %10.3e %9.3f | %9zu %9.3f | %+.1f %%\n", (long long)n, SA::algorithm_name(a), v,
+                    f.max_error, f.seconds, dp_vertices, dp_seconds, 100.0 * (1.0 - double(v) / double(dp_vertices)));
+      }
     }
+  }
+
+  if(table('3')) {
+    std::printf("\n3. gap to the exact optimum (penalty mode, objective |AX-P|^2 + lambda #knots)\n");
+    std::printf("%-28s %8s | %-8s %7s %12s %9s %8s\n", "problem", "lambda", "algo", "knots", "objective", "seconds", "gap");
+    struct Exact_case { int degree; Eigen::Index samples; std::size_t grid; SA::Fit_algorithm exact; };
+    const Exact_case cases[] = {{1, 1000, 20, SA::Fit_algorithm::dynamic_programming},
+                                {1, 1000, 14, SA::Fit_algorithm::brute_force},
+                                {3, 1000, 14, SA::Fit_algorithm::brute_force}};
+    for(const Exact_case& c : cases) {
+      const Eigen::MatrixXd P = curve(c.samples, noise);
+      for(double lambda : {1e-3, 1e-2, 1e-1}) {
+        SA::Fit_options o = options(c.degree, c.exact);
+        o.penalty = lambda;
+        o.candidate_grid_size = c.grid;
+        SA::Spline_fit best;
+        try {
+          best = SA::fit_spline(P, o);
+        } catch(const SA::Invalid_input& e) {
+          std::printf("degree %d, %lld samples, %zu cand. %8g | not computable: %s\n", c.degree, (long long)c.samples,
+                      c.grid, lambda, e.what());
+          continue;
+        }
+        char problem[64];
+        std::snprintf(problem, sizeof problem, "degree %d, %lld samples, %zu cand.", c.degree, (long long)c.samples, c.grid);
+        for(SA::Fit_algorithm a : {c.exact, SA::Fit_algorithm::penalty_decomposition, SA::Fit_algorithm::greedy_removal}) {
+          o.algorithm = a;
+          const SA::Spline_fit f = a == c.exact ? best : SA::fit_spline(P, o);
+          std::printf("%-28s %8g | %-8s %7zu %12.6e %9.4f %+7.2f%%\n", problem, lambda, SA::algorithm_name(a),
+                      f.number_of_knots(), f.objective, f.seconds, 100.0 * (f.objective / best.objective - 1.0));
+        }
+      }
+    }
+  }
+
+  if(table('4')) {
+    std::printf("\n4. error against knot count, cubic, %lld samples, lambda sweep\n", (long long)sweep_size);
+    std::printf("%10s | %-8s %7s %10s %10s %9s\n", "lambda", "algo", "knots", "rms", "max", "seconds");
+    const Eigen::MatrixXd S = curve(sweep_size, noise);
+    for(double lambda : {1e-1, 1e-2, 1e-3, 1e-4, 1e-5})
+      for(SA::Fit_algorithm a : heuristics) {
+        SA::Fit_options o = options(3, a);
+        o.penalty = lambda;
+        const SA::Spline_fit f = SA::fit_spline(S, o);
+        std::printf("%10g | %-8s %7zu %10.3e %10.3e %9.3f\n", lambda, SA::algorithm_name(a), f.number_of_knots(),
+                    f.rms_error, f.max_error, f.seconds);
+      }
+  }
   return 0;
 }

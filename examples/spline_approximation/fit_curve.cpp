@@ -3,7 +3,8 @@
 //
 // Fits a generated planar curve (CGAL Point_2, a noisy rose) with the fewest cubic knots
 // within a max error, and the fewest polyline vertices with the exact dynamic programming;
-// prints the knots and the errors.
+// prints the knots and the errors; then a closed curve (a noisy ellipse with a wiggle) by a
+// periodic cubic spline.
 //
 // Usage: fit_curve [number-of-points] [max-error]
 
@@ -53,6 +54,17 @@ int main(int argc, char** argv)
     Eigen::Index worst;
     cubic.errors.maxCoeff(&worst);
     std::cout << worst << " (" << cubic.errors[worst] << "), polyline " << exact.max_error << '\n';
+    // A closed curve: the last point joins the first (not repeated), the spline is periodic.
+    std::vector<K::Point_2> loop;
+    for(int j = 0; j < n; ++j) {
+      const double a = 2 * M_PI * double(j) / double(n), r = 1 + 0.1 * std::sin(5 * a);
+      loop.emplace_back(1.5 * r * std::cos(a) + noise(gen), r * std::sin(a) + noise(gen));
+    }
+    const SA::Spline_fit closed = SA::approximate_curve(loop, SA::parameters::max_error_bound(tolerance).closed_curve(true));
+    std::cout << "closed curve within max error " << tolerance << ": " << closed.number_of_knots() << " knots, "
+              << closed.spline.control_points.rows() << " control points, max error " << closed.max_error
+              << ", closed: " << (closed.closed() ? "yes" : "no") << ", gap at the seam "
+              << (closed.spline(0.0) - closed.spline(1.0)).norm() << '\n';
   } catch(const SA::Invalid_input& e) {
     std::cerr << "refused: " << e.what() << '\n';
     return 1;

@@ -65,14 +65,14 @@ Eigen::MatrixXd Band_rows::times(const Eigen::MatrixXd& X) const
 {
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(rows(), X.cols());
   for(Eigen::Index r = 0; r < rows(); ++r)
-    for(Eigen::Index q = 0; q < values.cols(); ++q) out.row(r) += values(r, q) * X.row(first[r] + q);
+    for(Eigen::Index q = 0; q < values.cols(); ++q) out.row(r) += values(r, q) * X.row(column(r, q));
   return out;
 }
 
 void Band_rows::add_transpose_times(const Eigen::MatrixXd& Y, double w, Eigen::MatrixXd& out) const
 {
   for(Eigen::Index r = 0; r < rows(); ++r)
-    for(Eigen::Index q = 0; q < values.cols(); ++q) out.row(first[r] + q) += (w * values(r, q)) * Y.row(r);
+    for(Eigen::Index q = 0; q < values.cols(); ++q) out.row(column(r, q)) += (w * values(r, q)) * Y.row(r);
 }
 
 Eigen::VectorXd clamped_knots(const Eigen::VectorXd& interior, int degree)
@@ -84,38 +84,77 @@ Eigen::VectorXd clamped_knots(const Eigen::VectorXd& interior, int degree)
   return U;
 }
 
-Band_rows design_rows(const Eigen::VectorXd& U, int k, const Eigen::VectorXd& t)
+Basis make_basis(const Eigen::VectorXd& knots, int degree, bool closed)
 {
+  Basis b;
+  b.degree = degree;
+  b.closed = closed;
+  b.knots = knots.size();
+  if(!closed) {
+    b.U = clamped_knots(knots, degree);
+    b.controls = b.U.size() - degree - 1;
+    return b;
+  }
+  const Eigen::VectorXd u = knots.size() > 0 ? knots : Eigen::VectorXd::Zero(1);
+  const Eigen::Index m = u.size();
+  // U[i] = u[(i - k - 1) mod m] + floor((i - k - 1) / m), so that U[k + 1] = u[0]: every t in
+  // [0, 1) has its span between U[k] (u[m-1] - 1 < 0) and U[m + k + 1] (u[0] + 1 > t), and
+  // the k + 1 basis functions there, with their knots, inside the vector.
+  b.U.resize(m + 2 * degree + 2);
+  for(Eigen::Index i = 0; i < b.U.size(); ++i) {
+    const Eigen::Index shifted = i - degree - 1;
+    const Eigen::Index period = shifted >= 0 ? shifted / m : -((-shifted + m - 1) / m);
+    b.U[i] = u[shifted - period * m] + double(period);
+  }
+  b.controls = m;
+  return b;
+}
+
+Band_rows design_rows(const Basis& b, const Eigen::VectorXd& t)
+{
+  const int k = b.degree;
   Band_rows A;
+  A.wrap = b.closed ? b.controls : 0;
   A.first.resize(t.size());
   A.values.resize(t.size(), k + 1);
   double N[4];
   for(Eigen::Index j = 0; j < t.size(); ++j) {
-    const Eigen::Index s = find_span(U, k, t[j]);
-    basis_functions(U, k, s, t[j], N);
+    const Eigen::Index s = find_span(b.U, k, t[j]);
+    basis_functions(b.U, k, s, t[j], N);
     A.first[j] = int(s - k);
     for(int q = 0; q <= k; ++q) A.values(j, q) = N[q];
   }
   return A;
 }
 
-Band_rows jump_rows(const Eigen::VectorXd& U, int k)
+Band_rows jump_rows(const Basis& b)
 {
-  const Eigen::Index n_ctrl = U.size() - k - 1, m = n_ctrl - k - 1;
+  const int k = b.degree;
+  const Eigen::Index m = b.knots;
   Band_rows J;
+  J.wrap = b.closed ? b.controls : 0;
   J.first.resize(m);
   J.values.resize(m, k + 2);
   double c[5];
   for(Eigen::Index r = 0; r < m; ++r) {
-    const Eigen::Index s = k + 1 + r; // U[s] is the r-th interior knot
+    const Eigen::Index s = k + 1 + r; // U[s] is the r-th knot, interior or on the circle
     J.first[r] = int(s - k - 1);
     for(Eigen::Index i = s - k - 1; i <= s; ++i) {
-      kth_derivative_on_spans(U, k, i, c);
+      kth_derivative_on_spans(b.U, k, i, c);
       const double right = (s - i >= 0 && s - i <= k) ? c[s - i] : 0.0;
       const double left = (s - 1 - i >= 0 && s - 1 - i <= k) ? c[s - 1 - i] : 0.0;
       J.values(r, i - (s - k - 1)) = right - left;
     }
-    const double norm = J.values.row(r).norm();
+    // The norm of the row as it acts on the control points: with fewer than k + 2 wrapped
+    // control points, entries landing in one column add first.
+    double norm = J.values.row(r).norm();
+    if(J.wrap > 0 && J.wrap < k + 2) {
+      Eigen::VectorXd acting = Eigen::VectorXd::Zero(J.wrap);
+      for(Eigen::Index q = 0; q < k + 2; ++q) acting[J.column(r, q)] += J.values(r, q);
+      // A row that cancels out (one knot on the circle: only constants) stays zero, not roundoff scaled up.
+      norm = acting.norm() > 1e-12 * norm ? acting.norm() : 0.0;
+      if(norm == 0) J.values.row(r).setZero();
+    }
     if(norm > 0) J.values.row(r) /= norm;
   }
   return J;
@@ -132,8 +171,17 @@ Eigen::RowVectorXd B_spline::operator()(double t) const
 
 Eigen::MatrixXd B_spline::evaluate(const Eigen::VectorXd& t) const
 {
+  if(closed) { // knots on the circle; t wraps with period 1
+    const Eigen::VectorXd c = t.array() - t.array().floor();
+    return internal::design_rows(internal::make_basis(knots, degree, true), c.cwiseMin(std::nextafter(1.0, 0.0)))
+        .times(control_points);
+  }
   const Eigen::VectorXd c = t.cwiseMax(knots[0]).cwiseMin(knots[knots.size() - 1]);
-  return internal::design_rows(knots, degree, c).times(control_points);
+  internal::Basis b;
+  b.U = knots;
+  b.degree = degree;
+  b.controls = control_points.rows();
+  return internal::design_rows(b, c).times(control_points);
 }
 
 } // namespace Spline_approximation

@@ -26,7 +26,8 @@ Spline_fit greedy_removal(const Problem& p, const Goal& goal, const std::vector<
   std::size_t batch = std::max<std::size_t>(1, kept.size() / 8);
   std::size_t tried_singles = 0; // at batch 1, the next few ranked knots are tried before giving up
   while(!kept.empty()) {
-    const Band_rows J = jump_rows(fit.spline.knots, p.degree);
+    const Eigen::VectorXd knots = p.closed ? fit.spline.knots : fit.spline.interior_knots();
+    const Band_rows J = jump_rows(make_basis(knots, p.degree, p.closed));
     const Eigen::VectorXd jump = J.times(fit.spline.control_points).rowwise().norm();
     std::vector<std::size_t> order(kept.size());
     std::iota(order.begin(), order.end(), std::size_t(0));
@@ -41,6 +42,8 @@ Spline_fit greedy_removal(const Problem& p, const Goal& goal, const std::vector<
       ++chosen;
       if(i > 0) blocked[i - 1] = 1;
       if(i + 1 < kept.size()) blocked[i + 1] = 1;
+      if(p.closed && i == 0) blocked[kept.size() - 1] = 1; // on a closed curve the ends are neighbours
+      if(p.closed && i + 1 == kept.size()) blocked[0] = 1;
     }
     if(chosen == 0) break;
     std::vector<std::size_t> trial_kept;

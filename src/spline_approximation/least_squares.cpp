@@ -5,6 +5,8 @@
 
 #include <CGAL/Spline_approximation/internal/spline_numerics.h>
 
+#include <Eigen/SparseCholesky>
+
 #include <algorithm>
 #include <cmath>
 
@@ -63,16 +65,76 @@ Eigen::MatrixXd Banded_spd::solve(const Eigen::MatrixXd& B) const
   return X;
 }
 
+struct Spd_matrix::Cyclic
+{
+  Eigen::SparseMatrix<double> M;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
+};
+
+Spd_matrix::Spd_matrix(Eigen::Index n, int w, bool cyclic)
+    : cyclic_(cyclic), band_(cyclic ? 0 : n, w), sparse_(cyclic ? std::make_shared<Cyclic>() : nullptr)
+{
+  if(cyclic) sparse_->M.resize(n, n);
+}
+
+void Spd_matrix::add_gram(const Band_rows& R, double w)
+{
+  if(!cyclic_) return band_.add_gram(R, w);
+  std::vector<Eigen::Triplet<double>> entries;
+  const Eigen::Index c = R.values.cols();
+  entries.reserve(std::size_t(R.rows() * c * c));
+  for(Eigen::Index r = 0; r < R.rows(); ++r)
+    for(Eigen::Index a = 0; a < c; ++a)
+      for(Eigen::Index b = 0; b < c; ++b) // both triangles: wrapped columns may coincide
+        entries.emplace_back(R.column(r, a), R.column(r, b), w * R.values(r, a) * R.values(r, b));
+  Eigen::SparseMatrix<double> G(sparse_->M.rows(), sparse_->M.cols());
+  G.setFromTriplets(entries.begin(), entries.end()); // duplicates add
+  sparse_->M += G;
+}
+
+Spd_matrix Spd_matrix::plus(const Spd_matrix& B, double beta) const
+{
+  Spd_matrix S(cyclic_ ? sparse_->M.rows() : 0, 0, cyclic_);
+  if(!cyclic_) S.band_ = band_.plus(B.band_, beta);
+  else S.sparse_->M = sparse_->M + beta * B.sparse_->M;
+  return S;
+}
+
+double Spd_matrix::max_diagonal() const
+{
+  return cyclic_ ? sparse_->M.diagonal().maxCoeff() : band_.max_diagonal();
+}
+
+bool Spd_matrix::factor(double relative_pivot)
+{
+  if(!cyclic_) return band_.factor(relative_pivot);
+  sparse_->ldlt.compute(sparse_->M);
+  if(sparse_->ldlt.info() != Eigen::Success) return false;
+  // The same test as the banded Cholesky: each pivot against its diagonal entry (in the
+  // factor's ordering); catches NaN too.
+  const Eigen::VectorXd diagonal = sparse_->ldlt.permutationP() * Eigen::VectorXd(sparse_->M.diagonal());
+  const Eigen::VectorXd pivots = sparse_->ldlt.vectorD();
+  for(Eigen::Index i = 0; i < pivots.size(); ++i)
+    if(!(pivots[i] > relative_pivot * diagonal[i])) return false;
+  return true;
+}
+
+Eigen::MatrixXd Spd_matrix::solve(const Eigen::MatrixXd& B) const
+{
+  if(!cyclic_) return band_.solve(B);
+  return sparse_->ldlt.solve(B);
+}
+
 Spline_fit finish(const Problem& p, const std::vector<std::size_t>& kept, double lambda)
 {
   const Eigen::MatrixXd& P = *p.samples;
   const int k = p.degree;
   Eigen::VectorXd interior(kept.size());
   for(std::size_t i = 0; i < kept.size(); ++i) interior[Eigen::Index(i)] = p.candidates[Eigen::Index(kept[i])];
-  const Eigen::VectorXd U = clamped_knots(interior, k);
-  const Band_rows A = design_rows(U, k, p.t);
-  const Eigen::Index n_ctrl = U.size() - k - 1;
-  Banded_spd AtA(n_ctrl, k + 1);
+  const Basis basis = make_basis(interior, k, p.closed);
+  const Band_rows A = design_rows(basis, p.t);
+  const Eigen::Index n_ctrl = basis.controls;
+  Spd_matrix AtA(n_ctrl, k + 1, p.closed);
   AtA.add_gram(A, 1.0);
   Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(n_ctrl, P.cols());
   A.add_transpose_times(P, 1.0, rhs);
@@ -80,16 +142,17 @@ Spline_fit finish(const Problem& p, const std::vector<std::size_t>& kept, double
   // samples (Schoenberg-Whitney fails): then add 1e-10 |J X|^2 at the kept knots, whose kernel
   // (single polynomials) the samples do determine, so the minimiser is unique and keeps its
   // residual within about 1e-10 of the best one.
-  Banded_spd M = AtA;
+  Spd_matrix M = AtA.plus(AtA, 0.0); // a copy (the cyclic one shares nothing with AtA)
   if(!M.factor(1e-12)) {
-    Banded_spd JtJ(n_ctrl, k + 1);
-    JtJ.add_gram(jump_rows(U, k), 1.0);
+    Spd_matrix JtJ(n_ctrl, k + 1, p.closed);
+    JtJ.add_gram(jump_rows(basis), 1.0);
     M = AtA.plus(JtJ, 1e-10 * AtA.max_diagonal());
     if(!M.factor(1e-15)) throw Numerical_failure("least-squares spline: the normal equations are singular");
   }
   Spline_fit fit;
   fit.spline.degree = k;
-  fit.spline.knots = U;
+  fit.spline.closed = p.closed;
+  fit.spline.knots = p.closed ? interior : basis.U; // closed: the knots on the circle
   fit.spline.control_points = M.solve(rhs);
   fit.parameters = p.t;
   fit.candidates = p.candidates;

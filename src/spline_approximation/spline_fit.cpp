@@ -6,6 +6,7 @@
 #include <CGAL/Spline_approximation/Spline_fit.h>
 #include <CGAL/Spline_approximation/internal/spline_numerics.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <sstream>
@@ -15,11 +16,15 @@ namespace CGAL {
 namespace Spline_approximation {
 namespace {
 
-void check_samples(const Eigen::MatrixXd& samples, int degree)
+void check_samples(const Eigen::MatrixXd& samples, int degree, bool closed = false)
 {
   if(degree < 1 || degree > 3)
     throw Invalid_input("spline fit: the degree must be 1, 2 or 3, not " + std::to_string(degree));
   if(samples.cols() < 1) throw Invalid_input("spline fit: the samples have no coordinates");
+  // A closed curve needs a polygon (three samples) and, like an open one, degree + 1 samples.
+  if(closed && samples.rows() < std::max(3, degree + 1))
+    throw Invalid_input("spline fit: a closed curve of degree " + std::to_string(degree) + " needs at least " +
+                        std::to_string(std::max(3, degree + 1)) + " samples, got " + std::to_string(samples.rows()));
   if(samples.rows() < degree + 1)
     throw Invalid_input("spline fit: degree " + std::to_string(degree) + " needs at least " +
                         std::to_string(degree + 1) + " samples, got " + std::to_string(samples.rows()));
@@ -78,9 +83,10 @@ const char* algorithm_name(Fit_algorithm a)
   return "?";
 }
 
-Eigen::VectorXd chord_length_parameters(const Eigen::MatrixXd& samples)
+Eigen::VectorXd chord_length_parameters(const Eigen::MatrixXd& samples, bool closed)
 {
   if(samples.rows() < 2) throw Invalid_input("chord-length parameters: need at least two samples");
+  if(closed && samples.rows() < 3) throw Invalid_input("chord-length parameters: a closed curve needs at least three samples");
   Eigen::VectorXd t(samples.rows());
   t[0] = 0;
   for(Eigen::Index j = 1; j < samples.rows(); ++j) {
@@ -93,19 +99,24 @@ Eigen::VectorXd chord_length_parameters(const Eigen::MatrixXd& samples)
                           " coincide (a zero-length piece of the curve)");
     t[j] = t[j - 1] + d;
   }
-  return t / t[t.size() - 1];
+  if(!closed) return t / t[t.size() - 1];
+  const double closing = (samples.row(0) - samples.row(samples.rows() - 1)).norm();
+  if(!(closing > 0))
+    throw Invalid_input("chord-length parameters: the last sample of a closed curve equals the first (do not repeat "
+                        "the first sample; the closing segment is implied)");
+  return t / (t[t.size() - 1] + closing);
 }
 
 Spline_fit fit_spline(const Eigen::MatrixXd& samples, const Fit_options& options)
 {
-  check_samples(samples, options.degree);
-  return fit_spline(samples, chord_length_parameters(samples), options);
+  check_samples(samples, options.degree, options.closed_curve);
+  return fit_spline(samples, chord_length_parameters(samples, options.closed_curve), options);
 }
 
 Spline_fit fit_spline(const Eigen::MatrixXd& samples, const Eigen::VectorXd& parameters, const Fit_options& options)
 {
   const auto start = std::chrono::steady_clock::now();
-  check_samples(samples, options.degree);
+  check_samples(samples, options.degree, options.closed_curve);
   check_goal(options);
   const Eigen::Index n = samples.rows();
   if(parameters.size() != n)
@@ -120,14 +131,24 @@ Spline_fit fit_spline(const Eigen::MatrixXd& samples, const Eigen::VectorXd& par
   internal::Problem p;
   p.samples = &samples;
   p.degree = options.degree;
-  p.t = (parameters.array() - parameters[0]) / (parameters[n - 1] - parameters[0]);
-  p.t[n - 1] = 1; // exactly, whatever the rounding of the division
+  p.closed = options.closed_curve;
   const std::size_t g = options.candidate_grid_size;
-  if(g > 0) {
-    p.candidates.resize(Eigen::Index(g));
-    for(std::size_t i = 0; i < g; ++i) p.candidates[Eigen::Index(i)] = double(i + 1) / double(g + 1);
+  if(p.closed) { // period 1, shifted to start at 0; every sample (0 included) or i / g a candidate
+    if(!(parameters[n - 1] - parameters[0] < 1))
+      throw Invalid_input("spline fit: the parameters of a closed curve span less than its period 1 (last minus "
+                          "first is " + std::to_string(parameters[n - 1] - parameters[0]) + ")");
+    p.t = parameters.array() - parameters[0];
+    if(g > 0) p.candidates = Eigen::VectorXd::LinSpaced(Eigen::Index(g), 0.0, double(g - 1) / double(g));
+    else p.candidates = p.t;
   } else {
-    p.candidates = p.t.segment(1, n - 2);
+    p.t = (parameters.array() - parameters[0]) / (parameters[n - 1] - parameters[0]);
+    p.t[n - 1] = 1; // exactly, whatever the rounding of the division
+    if(g > 0) {
+      p.candidates.resize(Eigen::Index(g));
+      for(std::size_t i = 0; i < g; ++i) p.candidates[Eigen::Index(i)] = double(i + 1) / double(g + 1);
+    } else {
+      p.candidates = p.t.segment(1, n - 2);
+    }
   }
   internal::Goal goal;
   goal.lambda = options.penalty.value_or(0.0);
@@ -145,6 +166,9 @@ Spline_fit fit_spline(const Eigen::MatrixXd& samples, const Eigen::VectorXd& par
   case Fit_algorithm::dynamic_programming:
     if(options.degree != 1)
       throw Invalid_input("spline fit: the dynamic programming optimum is known for degree 1 only");
+    if(p.closed)
+      throw Invalid_input("spline fit: the dynamic programming optimum is for open curves only (a closed curve has "
+                          "no first node to start the recursion from; use brute force or a heuristic)");
     if(goal.max_error)
       throw Invalid_input("spline fit: the dynamic programming optimum is known for a penalty or an RMS bound, "
                           "not a max error bound (use brute force on small problems)");
@@ -165,21 +189,25 @@ Spline_fit fit_spline(const Eigen::MatrixXd& samples, const Eigen::VectorXd& par
 }
 
 Spline_fit least_squares_spline(const Eigen::MatrixXd& samples, const Eigen::VectorXd& t, int degree,
-                                const Eigen::VectorXd& interior_knots)
+                                const Eigen::VectorXd& interior_knots, bool closed)
 {
-  check_samples(samples, degree);
+  check_samples(samples, degree, closed);
   if(t.size() != samples.rows()) throw Invalid_input("least-squares spline: one parameter per sample is needed");
   for(Eigen::Index j = 0; j < t.size(); ++j)
-    if(!(t[j] >= 0 && t[j] <= 1) || (j > 0 && !(t[j] > t[j - 1])))
-      throw Invalid_input("least-squares spline: the parameters must increase strictly within [0, 1]");
+    if(!(t[j] >= 0 && (closed ? t[j] < 1 : t[j] <= 1)) || (j > 0 && !(t[j] > t[j - 1])))
+      throw Invalid_input(closed ? "least-squares spline: the parameters of a closed curve must increase strictly within [0, 1)"
+                                 : "least-squares spline: the parameters must increase strictly within [0, 1]");
   for(Eigen::Index i = 0; i < interior_knots.size(); ++i)
-    if(!(interior_knots[i] > 0 && interior_knots[i] < 1) || (i > 0 && !(interior_knots[i] > interior_knots[i - 1])))
-      throw Invalid_input("least-squares spline: the interior knots must increase strictly within (0, 1)");
+    if(!(closed ? interior_knots[i] >= 0 : interior_knots[i] > 0) || !(interior_knots[i] < 1) ||
+       (i > 0 && !(interior_knots[i] > interior_knots[i - 1])))
+      throw Invalid_input(closed ? "least-squares spline: the knots of a closed curve must increase strictly within [0, 1)"
+                                 : "least-squares spline: the interior knots must increase strictly within (0, 1)");
   internal::Problem p;
   p.samples = &samples;
   p.t = t;
   p.degree = degree;
   p.candidates = interior_knots;
+  p.closed = closed;
   std::vector<std::size_t> all(std::size_t(interior_knots.size()));
   for(std::size_t i = 0; i < all.size(); ++i) all[i] = i;
   return internal::finish(p, all, 0);

@@ -47,7 +47,12 @@ struct Fit_options
   std::optional<double> max_error;  ///< > 0: the fewest knots with every sample within this distance
   std::optional<double> rms_error;  ///< > 0: the fewest knots with the root-mean-square distance within this
   /// 0: every interior sample parameter is a candidate knot; g > 0: the uniform grid `i / (g + 1)`, i = 1..g.
+  /// Closed curves: every sample parameter (0 included), or the grid `i / g`, i = 0..g-1.
   std::size_t candidate_grid_size = 0;
+  /// Fit a closed curve: the last sample joins the first (do not repeat it), chord length
+  /// includes that closing segment, and the spline is periodic (`B_spline::closed`).  Penalty
+  /// decomposition, greedy removal and brute force; the dynamic programming refuses it.
+  bool closed_curve = false;
 };
 
 /// A fitted spline with its errors.  The error of a sample is the Euclidean distance between
@@ -67,21 +72,25 @@ struct Spline_fit
   double seconds = 0;             ///< wall time of the fit
 
   std::size_t number_of_knots() const { return kept.size(); }
+  bool closed() const { return spline.closed; } ///< a closed curve (periodic spline)
 };
 
-/// Normalised chord-length parameters of the rows of `samples` (0 at the first, 1 at the last).
-/// \throws Invalid_input for fewer than two rows, a non-finite coordinate, or two consecutive equal rows.
-Eigen::VectorXd chord_length_parameters(const Eigen::MatrixXd& samples);
+/// Normalised chord-length parameters of the rows of `samples` (0 at the first, 1 at the last;
+/// `closed`: 1 would be the first again after the closing segment, so the last is below 1).
+/// \throws Invalid_input for fewer than two rows (closed: three), a non-finite coordinate, or
+///         two consecutive equal rows (closed: the last equal to the first too).
+Eigen::VectorXd chord_length_parameters(const Eigen::MatrixXd& samples, bool closed = false);
 
-/// Fits an open curve through the rows of `samples` at chord-length parameters.
-/// \throws Invalid_input for fewer than `degree + 1` samples, NaN or infinite coordinates,
+/// Fits a curve (open, or closed if `options.closed_curve`) through the rows of `samples` at chord-length parameters.
+/// \throws Invalid_input for fewer than `degree + 1` samples (closed: `max(3, degree + 1)`), NaN or infinite coordinates,
 ///         consecutive repeated samples (a zero-length piece), `lambda < 0`, a bound `<= 0`, not
 ///         exactly one of penalty and bounds, a degree outside 1..3, or an exact algorithm asked
 ///         where it is not computable (dynamic programming for degree > 1 or a max-error bound,
 ///         brute force on more than `max_brute_force_candidates` candidates).
 Spline_fit fit_spline(const Eigen::MatrixXd& samples, const Fit_options& options);
 
-/// Same, at the caller's parameters (strictly increasing and finite; mapped affinely to [0, 1]).
+/// Same, at the caller's parameters (strictly increasing and finite; mapped affinely to [0, 1];
+/// closed curves: the period is 1, so the last minus the first must be below 1, and they are shifted to start at 0).
 Spline_fit fit_spline(const Eigen::MatrixXd& samples, const Eigen::VectorXd& parameters,
                       const Fit_options& options);
 
@@ -89,8 +98,9 @@ Spline_fit fit_spline(const Eigen::MatrixXd& samples, const Eigen::VectorXd& par
 /// increasing) at the parameters `t` (in [0, 1]): the finish of every algorithm, and the
 /// uniform-knot baseline.  Where the knots leave the fit under-determined (an interval without
 /// enough samples), the fit with the smallest k-th derivative jumps among the best is returned.
+/// `closed`: the periodic spline, knots and parameters in [0, 1).
 Spline_fit least_squares_spline(const Eigen::MatrixXd& samples, const Eigen::VectorXd& t, int degree,
-                                const Eigen::VectorXd& interior_knots);
+                                const Eigen::VectorXd& interior_knots, bool closed = false);
 
 } // namespace Spline_approximation
 } // namespace CGAL

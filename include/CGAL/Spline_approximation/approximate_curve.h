@@ -37,7 +37,7 @@ Eigen::MatrixXd points_to_matrix(const PointRange& points)
   return P;
 }
 
-/// Fits an open curve through `points` with the fewest knots for the goal given.
+/// Fits a curve (open, or closed with `closed_curve(true)`) through `points` with the fewest knots for the goal given.
 ///
 /// \tparam PointRange a range of CGAL `Point_2` or `Point_3`
 /// \param np exactly one of `knot_penalty`, `max_error_bound`, `rms_error_bound`, and optionally:
@@ -48,6 +48,7 @@ Eigen::MatrixXd points_to_matrix(const PointRange& points)
 ///   \cgalParamNBegin{rms_error_bound} the fewest knots within this root-mean-square distance (> 0); `double` \cgalParamNEnd
 ///   \cgalParamNBegin{fit_algorithm} `Fit_algorithm`; default `penalty_decomposition` \cgalParamNEnd
 ///   \cgalParamNBegin{candidate_grid_size} 0: every point's parameter is a candidate knot; g: a uniform grid of g; `std::size_t`; default 0 \cgalParamNEnd
+///   \cgalParamNBegin{closed_curve} the last point joins the first (not repeated); a periodic spline; `bool`; default false \cgalParamNEnd
 ///   \cgalParamNBegin{curve_parameters} one strictly increasing parameter per point; `std::vector<double>`; default chord length \cgalParamNEnd
 /// \cgalNamedParamsEnd
 /// \throws Invalid_input as `fit_spline` does.
@@ -61,6 +62,7 @@ Spline_fit approximate_curve(const PointRange& points, const NamedParameters& np
   o.degree = choose_parameter(get_parameter(np, internal_np::spline_degree), 3);
   o.algorithm = choose_parameter(get_parameter(np, internal_np::fit_algorithm), Fit_algorithm::penalty_decomposition);
   o.candidate_grid_size = choose_parameter(get_parameter(np, internal_np::candidate_grid_size), std::size_t(0));
+  o.closed_curve = choose_parameter(get_parameter(np, internal_np::closed_curve), false);
   if constexpr(!is_default_parameter<NamedParameters, internal_np::knot_penalty_t>::value)
     o.penalty = double(get_parameter(np, internal_np::knot_penalty));
   if constexpr(!is_default_parameter<NamedParameters, internal_np::max_error_bound_t>::value)

@@ -8,6 +8,8 @@
 // The spline: degree (1 to 3) and the caller's curve parameters (one per sample)
 MR_add_named_parameter(spline_degree_t, spline_degree, spline_degree)
 MR_add_named_parameter(curve_parameters_t, curve_parameters, curve_parameters)
+// A closed curve: the last point joins the first, the spline is periodic
+MR_add_named_parameter(closed_curve_t, closed_curve, closed_curve)
 
 // What is minimised: a penalty per knot, or the fewest knots within an error bound
 MR_add_named_parameter(knot_penalty_t, knot_penalty, knot_penalty)

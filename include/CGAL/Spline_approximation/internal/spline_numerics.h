@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -19,24 +20,42 @@ namespace CGAL {
 namespace Spline_approximation {
 namespace internal {
 
-// A matrix whose row r has its nonzeros in the consecutive columns first[r] .. first[r] + values.cols() - 1.
+// A matrix whose row r has its nonzeros in the consecutive columns first[r] .. first[r] + values.cols() - 1,
+// taken modulo `wrap` when it is positive (the wrapped control points of a closed curve; two
+// entries of a row may then land in one column, where they add).
 struct Band_rows
 {
   Eigen::VectorXi first;
   Eigen::MatrixXd values;
+  Eigen::Index wrap = 0;
   Eigen::Index rows() const { return first.size(); }
+  Eigen::Index column(Eigen::Index r, Eigen::Index q) const { return wrap > 0 ? (first[r] + q) % wrap : first[r] + q; }
   Eigen::MatrixXd times(const Eigen::MatrixXd& X) const;                    // R X
   void add_transpose_times(const Eigen::MatrixXd& Y, double w, Eigen::MatrixXd& out) const; // out += w R^T Y
 };
 
+// The B-spline basis on a set of knots: clamped on [0, 1] (open curves; `knots` interior), or
+// periodic of period 1 (closed curves; `knots` in [0, 1) on the circle, the knot vector
+// extended by whole periods and the control points wrapped: basis function i and i + m are
+// translates by one period and share control point i mod m).  A closed spline without knots is
+// constant (a periodic polynomial): it is built on the single knot 0 with one control point.
+struct Basis
+{
+  Eigen::VectorXd U;           // the full knot vector (clamped, or extended periodically)
+  int degree = 3;
+  bool closed = false;
+  Eigen::Index controls = 0;   // number of control points
+  Eigen::Index knots = 0;      // number of (interior or circle) knots: one jump row each
+};
+Basis make_basis(const Eigen::VectorXd& knots, int degree, bool closed);
 // The clamped knot vector of `interior` knots for `degree`.
 Eigen::VectorXd clamped_knots(const Eigen::VectorXd& interior, int degree);
-// Rows of the design matrix A: A(j, i) = N_i(t_j); t must be non-decreasing.
-Band_rows design_rows(const Eigen::VectorXd& U, int degree, const Eigen::VectorXd& t);
-// One row per interior knot: the jump of the degree-th derivative there, scaled to unit norm
+// Rows of the design matrix A: A(j, i) = N_i(t_j); t must be non-decreasing (in [0, 1) if closed).
+Band_rows design_rows(const Basis& b, const Eigen::VectorXd& t);
+// One row per knot: the jump of the degree-th derivative there, scaled to unit norm
 // (removing the knot is exactly asking the row times X to vanish; the scale makes the
 // penalty read in data units whatever the knot spacing).
-Band_rows jump_rows(const Eigen::VectorXd& U, int degree);
+Band_rows jump_rows(const Basis& b);
 
 // Symmetric positive definite matrix of half-bandwidth w, factored by banded Cholesky:
 // O(n w^2), which for w <= 4 beats any general sparse solver by a wide margin.
@@ -60,13 +79,34 @@ private:
   int w_;
 };
 
+// The normal matrices of a fit: banded for open curves; for closed curves the wrapped control
+// points add corners to the band, and Eigen's sparse LDL^T (AMD ordering: fill stays within the
+// band and a border of width w) factors them.  Same interface as Banded_spd.
+class Spd_matrix
+{
+public:
+  Spd_matrix(Eigen::Index n, int w, bool cyclic);
+  void add_gram(const Band_rows& R, double w); // += w R^T R
+  Spd_matrix plus(const Spd_matrix& B, double beta) const;
+  double max_diagonal() const;
+  bool factor(double relative_pivot);
+  Eigen::MatrixXd solve(const Eigen::MatrixXd& B) const;
+
+private:
+  struct Cyclic; // the sparse matrix and its factor
+  bool cyclic_;
+  Banded_spd band_;
+  std::shared_ptr<Cyclic> sparse_;
+};
+
 // The problem every algorithm sees.
 struct Problem
 {
   const Eigen::MatrixXd* samples = nullptr;
   Eigen::VectorXd t;          // in [0, 1], strictly increasing
   int degree = 3;
-  Eigen::VectorXd candidates; // interior candidate knots, increasing
+  Eigen::VectorXd candidates; // interior candidate knots, increasing (closed: in [0, 1), on the circle)
+  bool closed = false;        // a periodic spline of period 1
 };
 
 // What is asked: a penalty, or a bound on the max or RMS error.
