@@ -7,6 +7,8 @@
 #ifndef SPLINE_APPROXIMATION_TEST_DATA_H
 #define SPLINE_APPROXIMATION_TEST_DATA_H
 
+#include <CGAL/Spline_approximation/Spline_fit.h>
+
 #include <Eigen/Core>
 #include <Eigen/LU>
 
@@ -15,6 +17,19 @@
 #include <vector>
 
 namespace spline_test {
+
+/// Options of a penalty-mode fit: degree, algorithm, lambda, candidate grid (0: every sample).
+inline CGAL::Spline_approximation::Fit_options penalty_options(int degree, CGAL::Spline_approximation::Fit_algorithm a,
+                                                              double lambda, std::size_t grid = 0, bool closed = false)
+{
+  CGAL::Spline_approximation::Fit_options o;
+  o.degree = degree;
+  o.algorithm = a;
+  o.penalty = lambda;
+  o.candidate_grid_size = grid;
+  o.closed_curve = closed;
+  return o;
+}
 
 // Samples of a degree-k spline in D = 2 with the given knots, at the parameters t.
 inline Eigen::MatrixXd truncated_power_spline(const Eigen::VectorXd& t, int k, const std::vector<double>& knots)

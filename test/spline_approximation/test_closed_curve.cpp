@@ -23,13 +23,7 @@ namespace {
 
 SA::Fit_options closed_options(int k, SA::Fit_algorithm a, double lambda, std::size_t grid = 0)
 {
-  SA::Fit_options o;
-  o.degree = k;
-  o.algorithm = a;
-  o.penalty = lambda;
-  o.candidate_grid_size = grid;
-  o.closed_curve = true;
-  return o;
+  return spline_test::penalty_options(k, a, lambda, grid, true);
 }
 
 // Parameters in [0, 1): j / n, jittered by up to a quarter step (generic, still increasing).

@@ -22,12 +22,7 @@ namespace {
 
 SA::Fit_options options(int k, SA::Fit_algorithm a, double lambda, std::size_t grid = 0)
 {
-  SA::Fit_options o;
-  o.degree = k;
-  o.algorithm = a;
-  o.penalty = lambda;
-  o.candidate_grid_size = grid;
-  return o;
+  return spline_test::penalty_options(k, a, lambda, grid);
 }
 
 // A 3D curve (a noisy helix).

@@ -18,15 +18,7 @@ using spline_test::uniform_parameters;
 
 namespace {
 
-SA::Fit_options penalty_options(int degree, SA::Fit_algorithm a, double lambda, std::size_t grid = 0)
-{
-  SA::Fit_options o;
-  o.degree = degree;
-  o.algorithm = a;
-  o.penalty = lambda;
-  o.candidate_grid_size = grid;
-  return o;
-}
+using spline_test::penalty_options;
 
 std::vector<std::size_t> indices(std::initializer_list<std::size_t> l) { return std::vector<std::size_t>(l); }
 
