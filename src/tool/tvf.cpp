@@ -54,6 +54,9 @@ const std::vector<Command_system>& systems()
     {"Vibration modes and compressed vibration modes (Chapter 5, CGAL Vibration_modes)",
      {{"modes", "the lowest vibration modes of a shell or a Laplacian, or compressed (local) modes; .vtp output",
        modes_command}}},
+    {"Optimal spline approximation (Chapter 6, CGAL Spline_approximation)",
+     {{"fit", "the spline with the fewest knots within an error of a curve (CSV or OBJ polyline); JSON, OBJ, SVG",
+       fit_command}}},
     {"The viewer (every system)",
      {{"serve", "start the interactive viewer: a local web server and page (field editing today)", serve_command}}}};
   return list;
