@@ -17,12 +17,12 @@ namespace Model_reduction {
 
 #ifdef CGAL_MODEL_REDUCTION_HAS_CHOLMOD
 namespace {
-// Eigen's supernodal LL^T, with access to its CHOLMOD factor and workspace.
+// Eigen's CHOLMOD LL^T, with access to its CHOLMOD factor and workspace.
 template <class Matrix>
-struct Supernodal_llt : Eigen::CholmodSupernodalLLT<Matrix, Eigen::Lower>
+struct Cholmod_llt : Eigen::CholmodDecomposition<Matrix, Eigen::Lower>
 {
   cholmod_factor* factor() const { return this->m_cholmodFactor; }
-  cholmod_common& common() const { return const_cast<Supernodal_llt*>(this)->cholmod(); }
+  cholmod_common& common() const { return const_cast<Cholmod_llt*>(this)->cholmod(); }
 };
 } // namespace
 #endif
@@ -31,7 +31,7 @@ template <class Scalar>
 struct Basic_sparse_spd_solver<Scalar>::Impl
 {
 #ifdef CGAL_MODEL_REDUCTION_HAS_CHOLMOD
-  Supernodal_llt<Eigen::SparseMatrix<Scalar>> factorization;
+  Cholmod_llt<Eigen::SparseMatrix<Scalar>> factorization;
   // A simplicial copy of the factor, made on the first solve of at most two columns: the
   // supernodal solve of one or two columns spends its time in small BLAS calls (2 columns of
   // W* on 346k faces: 77 ms supernodal, 41 ms simplicial; 6 columns: 112 and 101 ms).
@@ -46,11 +46,18 @@ struct Basic_sparse_spd_solver<Scalar>::Impl
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<Scalar>, Eigen::Lower> factorization;
 #endif
   bool factored = false;
+  bool supernodal = true;
   Eigen::Index n = 0;
 };
 
 template <class Scalar>
-Basic_sparse_spd_solver<Scalar>::Basic_sparse_spd_solver() : impl_(new Impl) {}
+Basic_sparse_spd_solver<Scalar>::Basic_sparse_spd_solver(Spd_factorization kind) : impl_(new Impl)
+{
+  impl_->supernodal = kind == Spd_factorization::supernodal;
+#ifdef CGAL_MODEL_REDUCTION_HAS_CHOLMOD
+  impl_->factorization.setMode(impl_->supernodal ? Eigen::CholmodSupernodalLLt : Eigen::CholmodSimplicialLLt);
+#endif
+}
 template <class Scalar>
 Basic_sparse_spd_solver<Scalar>::~Basic_sparse_spd_solver() = default;
 template <class Scalar>
@@ -114,7 +121,7 @@ typename Basic_sparse_spd_solver<Scalar>::Matrix Basic_sparse_spd_solver<Scalar>
 {
   if(impl_->n == 0) return Matrix(0, B.cols());
 #ifdef CGAL_MODEL_REDUCTION_HAS_CHOLMOD
-  if(B.cols() <= 2 && impl_->factored)
+  if(B.cols() <= 2 && impl_->factored && impl_->supernodal)
   {
     cholmod_common& common = impl_->factorization.common();
     {

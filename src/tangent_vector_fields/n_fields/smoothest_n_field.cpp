@@ -4,6 +4,7 @@
 #include <CGAL/Tangent_vector_fields/Smoothest_n_field_solver.h>
 #include <CGAL/Model_reduction/Generalized_eigensolver.h>
 #include <CGAL/Model_reduction/Sparse_spd_solver.h>
+#include <CGAL/Model_reduction/internal/One_blas_thread.h>
 #include <CGAL/Tangent_vector_fields/errors.h>
 
 #include <Eigen/Dense>
@@ -25,78 +26,97 @@ typedef Eigen::SparseMatrix<Complex> Complex_sparse_matrix;
 typedef Eigen::MatrixXcd Complex_matrix;
 
 // The lowest eigenvector of A x = lambda D x, A Hermitian positive definite (S_n in complex
-// form: each eigenpair (z, i z) of the real form is one complex eigenvector): block Lanczos
-// on A^-1 D, blocks of 2, full reorthogonalisation in the D inner product, one Cholesky
-// factor.  Its largest Ritz values converge like Chebyshev polynomials (rocker arm and bunny:
-// 18 to 20 blocks of 4 real columns, where subspace iteration took 57 steps of 8).  No
-// inertia check: a Ritz vector with a true residual below the tolerance is an eigenvector,
-// and Lanczos finds the extremal ones first (the tests check it on analytic cases).
-// \throws Numerical_failure if A is not positive definite or 100 blocks do not converge.
-Eigen::VectorXcd block_lanczos(const Complex_sparse_matrix& A, const Eigen::VectorXd& d, double tolerance)
+// form: each eigenpair (z, i z) of the real form is one complex eigenvector): Lanczos on the
+// shift-inverted operator A^-1 D, self-adjoint in the D inner product, one simplicial Cholesky
+// factor and one single-column solve per step.  The lowest eigenvalue can sit within 2% of the
+// next (armadillo, 346k faces: 951.8 and 972.9), so the run is long (about 40 steps) and
+// what costs is keeping the Krylov vectors orthogonal: each new vector loses its components
+// along the last two by the three-term recurrence first (O(n)), so that one pass against all
+// of them (two reads of V) is enough; a second pass is made only when that pass removed more
+// than half of what was left (Daniel-Gragg-Kaufman-Stewart).  The tridiagonal T = V^H D A^-1 D V
+// comes from the same coefficients.  A single vector suffices: any vector of a multiple
+// lowest eigenspace is a smoothest field.  Partial reorthogonalisation (Simon's recurrence for
+// the loss of orthogonality, a full pass only past sqrt(eps)) was tried: with a semi-orthogonal
+// basis the true residual stalled at 1e-9 to 1e-5 (rocker arm, bunny), short of the default
+// 1e-10, even after inverse-iteration steps on the Ritz vector.
+//
+// Convergence: for the Ritz pair (x = V y, 1 / theta) of T, A x - D x / theta =
+// -(beta y_k / theta) A v_{k+1}, so its relative residual in the D^-1 norm is
+// beta |y_k| |A v_{k+1}|_{D^-1}: one sparse product per check.  A pair whose estimate meets the
+// tolerance is checked with its true residual (Rayleigh quotient, explicit product), which
+// alone decides.  No inertia check: Lanczos finds the extremal eigenvalues first (the tests
+// check it on analytic cases).
+// \throws Numerical_failure if A is not positive definite, the Krylov space closes, or 150
+//         steps do not converge.
+Eigen::VectorXcd lowest_by_lanczos(const Complex_sparse_matrix& A, const Eigen::VectorXd& d, double tolerance)
 {
   const Eigen::Index n = d.size();
-  const int block = static_cast<int>(std::min<Eigen::Index>(2, n));
-  const int max_blocks = static_cast<int>(std::min<Eigen::Index>(100, n / block));
-  Model_reduction::Sparse_hermitian_solver solver;
+  const int max_steps = static_cast<int>(std::min<Eigen::Index>(150, n));
+  // One BLAS thread: the products here are matrix-vector, where OpenBLAS's threads only wake
+  // and yield.
+  Model_reduction::internal::One_blas_thread one_blas_thread;
+  Model_reduction::Sparse_hermitian_solver solver(Model_reduction::Spd_factorization::simplicial);
   solver.factor(A, "S_n of the smoothest field");
-  // Capacity grows by 16 columns as the Krylov space grows (a preallocated n x 200 block
-  // would be 1.1 GB on 346k faces; growing by one column would copy V every time).
-  Complex_matrix V_storage(n, 0), H(0, 0);
-  int columns = 0;
-  auto V = [&]() { return V_storage.leftCols(columns); };
-  // Appends the columns of W, D-orthogonalised against V and among themselves.
-  auto d_norms = [&](const Complex_matrix& W) {
-    return (W.cwiseAbs2().transpose() * d).cwiseSqrt().eval();
-  };
-  auto append = [&](Complex_matrix W) {
-    // Classical Gram-Schmidt, repeated only for columns that lost more than half their
-    // length ("twice is enough"): the orthogonalisation is the cost that grows.
-    for(int pass = 0; pass < 2 && columns > 0; ++pass)
-    {
-      const Eigen::VectorXd before = d_norms(W);
-      const Complex_matrix DW = d.asDiagonal() * W; // first: V^H D W would copy V scaled
-      W -= V() * (V().adjoint() * DW);
-      if((d_norms(W).array() > 0.5 * before.array()).all()) break;
-    }
-    const Eigen::VectorXd entry = d_norms(W);
-    for(Eigen::Index j = 0; j < W.cols(); ++j)
-    {
-      Eigen::VectorXcd w = W.col(j);
-      for(int pass = 0; pass < 2; ++pass)
-        for(int i = columns - static_cast<int>(j); i < columns; ++i)
-          w -= V_storage.col(i).dot(d.cwiseProduct(w)) * V_storage.col(i);
-      const double norm = std::sqrt(std::real(w.dot(d.cwiseProduct(w))));
-      // Nothing new left of the column (relative to its length): the space is invariant.
-      if(!(norm > 1e-10 * entry[j])) throw Numerical_failure("smoothest n-field: the Krylov space closed");
-      if(columns == V_storage.cols()) V_storage.conservativeResize(Eigen::NoChange, columns + 16);
-      V_storage.col(columns++) = w / norm;
-    }
-    // H = V^H A V grows by the new columns only.
-    const int added = static_cast<int>(W.cols()), first = columns - added;
-    const Complex_matrix AW = A * V_storage.middleCols(first, added);
-    H.conservativeResize(columns, columns);
-    H.block(0, first, columns, added) = V().adjoint() * AW;
-    H.block(first, 0, added, first) = H.block(0, first, first, added).adjoint();
-  };
+  const Eigen::VectorXd d_inverse = d.cwiseInverse();
+  auto d_norm = [&](const Eigen::VectorXcd& w) { return std::sqrt(w.cwiseAbs2().dot(d)); };
+
+  // V grows by doubling its capacity: a preallocated n x 150 block would be 830 MB on 346k faces.
+  Complex_matrix V_storage(n, 8);
+  Complex_matrix T = Complex_matrix::Zero(max_steps + 1, max_steps + 1);
   std::mt19937_64 random(1);
   std::normal_distribution<double> normal;
-  Complex_matrix start(n, block);
-  for(Eigen::Index j = 0; j < start.cols(); ++j)
-    for(Eigen::Index i = 0; i < n; ++i) start(i, j) = Complex(normal(random), normal(random));
-  append(start);
-  for(int k = 1; k < max_blocks; ++k)
+  Eigen::VectorXcd w(n);
+  for(Eigen::Index i = 0; i < n; ++i) w[i] = Complex(normal(random), normal(random));
+  V_storage.col(0) = w / d_norm(w);
+  int columns = 1;
+  for(int k = 0; k < max_steps; ++k)
   {
-    append(solver.solve(Complex_matrix(d.asDiagonal() * V_storage.middleCols(columns - block, block))));
-    if(k < 6 || k % 2) continue; // a check costs an n x columns product: every other block
-    const Eigen::SelfAdjointEigenSolver<Complex_matrix> ritz(0.5 * (H + H.adjoint()));
-    const double lambda = ritz.eigenvalues()[0];
-    const Eigen::VectorXcd x = V() * ritz.eigenvectors().col(0);
-    const Eigen::VectorXcd r = A * x - lambda * d.cwiseProduct(x);
+    w = solver.solve(Eigen::VectorXcd(d.cwiseProduct(V_storage.col(k))));
+    const double entry = d_norm(w);
+    Eigen::VectorXcd coefficients = Eigen::VectorXcd::Zero(columns);
+    // The recurrence: the last two vectors, each subtracted in turn.
+    for(int i = std::max(0, k - 1); i <= k; ++i)
+    {
+      const Complex c = V_storage.col(i).dot(d.cwiseProduct(w));
+      w -= c * V_storage.col(i);
+      coefficients[i] += c;
+    }
+    // Full reorthogonalisation, repeated while a pass removes more than half of what is left.
+    for(int pass = 0; pass < 3; ++pass)
+    {
+      const double before = d_norm(w);
+      const Eigen::VectorXcd c = V_storage.leftCols(columns).adjoint() * d.cwiseProduct(w);
+      w.noalias() -= V_storage.leftCols(columns) * c;
+      coefficients += c;
+      if(d_norm(w) > 0.5 * before) break;
+    }
+    const double beta = d_norm(w);
+    T.col(k).head(columns) = coefficients;
+    T(k + 1, k) = beta;
+    // Nothing new left of the vector (relative to its length): the space is invariant.
+    if(!(beta > 1e-10 * entry)) throw Numerical_failure("smoothest n-field: the Krylov space closed");
+    if(columns == V_storage.cols()) V_storage.conservativeResize(Eigen::NoChange, 2 * columns);
+    V_storage.col(columns++) = w / beta;
+
+    // The Ritz pair of the largest theta in the space of the first k + 1 vectors, every other
+    // step (its estimate costs a product with A).
+    if(k < 8 || k % 2) continue;
+    const Eigen::Index m = k + 1;
+    const Complex_matrix Tk = T.topLeftCorner(m, m);
+    const Eigen::SelfAdjointEigenSolver<Complex_matrix> ritz(0.5 * (Tk + Tk.adjoint()));
+    const Eigen::VectorXcd y = ritz.eigenvectors().col(m - 1);
+    const Eigen::VectorXcd next = A * V_storage.col(k + 1);
+    const double estimate = beta * std::abs(y[m - 1]) * std::sqrt(next.cwiseAbs2().dot(d_inverse));
+    if(!(estimate <= tolerance)) continue;
+    Eigen::VectorXcd x = V_storage.leftCols(m) * y;
+    x /= d_norm(x);
+    const Eigen::VectorXcd Ax = A * x;
+    const double lambda = std::real(x.dot(Ax));
     // The residual of the symmetric form D^-1/2 A D^-1/2, relative to lambda (x is D-unit).
-    const double residual = std::sqrt(r.cwiseAbs2().cwiseQuotient(d).sum()) / lambda;
+    const double residual = std::sqrt((Ax - lambda * d.cwiseProduct(x)).cwiseAbs2().dot(d_inverse)) / lambda;
     if(residual <= tolerance) return x;
   }
-  throw Numerical_failure("smoothest n-field: block Lanczos did not converge");
+  throw Numerical_failure("smoothest n-field: Lanczos did not converge in " + std::to_string(max_steps) + " steps");
 }
 
 // The lowest eigenvector of S_n on the faces of one component (unit-area masses), as a real
@@ -129,7 +149,7 @@ Eigen::VectorXd lowest_on_component(const N_field_operators& ops, const std::vec
   Eigen::VectorXd x(2 * m);
   try
   {
-    const Eigen::VectorXcd z = block_lanczos(A, d, options.tolerance);
+    const Eigen::VectorXcd z = lowest_by_lanczos(A, d, options.tolerance);
     for(Eigen::Index i = 0; i < m; ++i)
     {
       x[2 * i] = z[i].real();
@@ -177,7 +197,7 @@ Eigen::VectorXd smoothest_n_field(const N_field_operators& ops, const Smoothest_
   double area = 0;
   for(int f = 0; f < nf; ++f) area += mesh.face_area(f);
 
-  // A NaN tolerance is never met: block Lanczos would run out of blocks and blame itself.
+  // A NaN tolerance is never met: Lanczos would run out of steps and blame itself.
   if(!(options.tolerance > 0 && options.tolerance < 1))
     throw Invalid_input("smoothest n-field: the tolerance must lie in (0, 1) (got " + std::to_string(options.tolerance) +
                         ")");
