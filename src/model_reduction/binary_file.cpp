@@ -44,12 +44,19 @@ void Binary_reader::expect_header(const char (&magic)[8], std::uint32_t version,
 std::uint32_t Binary_reader::expect_header(const char (&magic)[8], std::uint32_t oldest, std::uint32_t newest,
                                            const Mesh_identity& mesh)
 {
+  return expect_header(magic, oldest, newest, [&](std::uint32_t) { return mesh; });
+}
+
+std::uint32_t Binary_reader::expect_header(const char (&magic)[8], std::uint32_t oldest, std::uint32_t newest,
+                                           const std::function<Mesh_identity(std::uint32_t)>& mesh_of_version)
+{
   expect_magic(magic, "not a " + what_ + " file");
   const std::uint32_t found = value<std::uint32_t>();
   if(found < oldest || found > newest)
     fail("file format version " + std::to_string(found) + ", this library reads version " +
          (oldest == newest ? std::to_string(newest) : std::to_string(oldest) + " to " + std::to_string(newest)));
   if(value<std::uint32_t>() != byte_order_mark) fail("written on a machine of another byte order");
+  const Mesh_identity mesh = mesh_of_version(found);
   if(value<std::uint64_t>() != mesh.connectivity) fail("it belongs to a mesh with other connectivity");
   for(double s : mesh.geometry)
   {

@@ -51,7 +51,9 @@ int pair_up(const Eigen::VectorXd& values, const Eigen::MatrixXd& vectors, const
 namespace {
 
 const char file_magic[8] = {'T', 'V', 'F', 'N', 'F', 'I', 'E', 'L'};
-const std::uint32_t file_version = 2; // 2: the prescribed singularities of the connection
+// 2: the prescribed singularities of the connection; 3: the mesh identity read from each face's
+// smallest corner (`legacy_mesh_identity` before)
+const std::uint32_t file_version = 3;
 
 double total_area(const Intrinsic_mesh& mesh)
 {
@@ -183,7 +185,9 @@ N_field_basis N_field_basis::load(std::shared_ptr<const N_field_operators> opera
   std::ifstream in = internal::open_binary_file(path, "n-field basis", bytes);
   internal::Binary_reader r(in, path, bytes, "n-field basis");
   const N_field_operators& ops = basis.operators();
-  r.expect_header(file_magic, file_version, internal::mesh_identity(ops.mesh()));
+  r.expect_header(file_magic, 2, file_version, [&](std::uint32_t v) {
+    return v < 3 ? internal::legacy_mesh_identity(ops.mesh()) : internal::mesh_identity(ops.mesh());
+  });
   const std::int32_t n = r.value<std::int32_t>();
   if(n != ops.n()) r.fail("it holds " + std::to_string(n) + "-fields, not " + std::to_string(ops.n()) + "-fields");
   if(r.value<std::int32_t>() != static_cast<std::int32_t>(ops.options().boundary))

@@ -2,8 +2,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 
 #include <CGAL/Tangent_vector_fields/internal/basis_file.h>
+#include <CGAL/Model_reduction/internal/mesh_identity.h>
 
-#include <cmath>
+#include <vector>
 
 namespace CGAL {
 namespace Tangent_vector_fields {
@@ -11,7 +12,33 @@ namespace internal {
 
 namespace {
 
-std::uint64_t mesh_fingerprint(const Intrinsic_mesh& mesh)
+std::array<double, 5> geometry_signature(const Intrinsic_mesh& mesh)
+{
+  double area = 0;
+  for(int f = 0; f < mesh.number_of_faces(); ++f) area += mesh.face_area(f);
+  std::vector<double> lengths(mesh.number_of_edges());
+  for(int e = 0; e < mesh.number_of_edges(); ++e) lengths[e] = mesh.edge_length(e);
+  return Model_reduction::internal::geometry_signature(area, lengths);
+}
+
+} // namespace
+
+Model_reduction::internal::Mesh_identity mesh_identity(const Intrinsic_mesh& mesh)
+{
+  std::vector<std::array<int, 3>> faces(mesh.number_of_faces()), edges(mesh.number_of_faces());
+  for(int f = 0; f < mesh.number_of_faces(); ++f)
+  {
+    faces[f] = mesh.face_vertices(f);
+    edges[f] = mesh.face_edges(f);
+  }
+  Model_reduction::internal::Mesh_identity id;
+  id.connectivity = Model_reduction::internal::connectivity_fingerprint(mesh.number_of_vertices(), mesh.number_of_edges(),
+                                                                        faces, edges);
+  id.geometry = geometry_signature(mesh);
+  return id;
+}
+
+Model_reduction::internal::Mesh_identity legacy_mesh_identity(const Intrinsic_mesh& mesh)
 {
   Model_reduction::internal::Hasher h;
   h.add(mesh.number_of_vertices());
@@ -22,30 +49,8 @@ std::uint64_t mesh_fingerprint(const Intrinsic_mesh& mesh)
     h.add(mesh.face_vertices(f));
     h.add(mesh.face_edges(f));
   }
-  return h.h;
-}
-
-std::array<double, 5> geometry_signature(const Intrinsic_mesh& mesh)
-{
-  std::array<double, 5> s{};
-  for(int f = 0; f < mesh.number_of_faces(); ++f) s[0] += mesh.face_area(f);
-  std::uint64_t state = 0x243f6a8885a308d3ull;
-  for(int e = 0; e < mesh.number_of_edges(); ++e)
-    for(int k = 1; k < 5; ++k)
-    {
-      state = state * 6364136223846793005ull + 1442695040888963407ull;
-      const double weight = 0.5 + double(state >> 11) / double(1ull << 53);
-      s[k] += weight * mesh.edge_length(e);
-    }
-  return s;
-}
-
-} // namespace
-
-Model_reduction::internal::Mesh_identity mesh_identity(const Intrinsic_mesh& mesh)
-{
   Model_reduction::internal::Mesh_identity id;
-  id.connectivity = mesh_fingerprint(mesh);
+  id.connectivity = h.h;
   id.geometry = geometry_signature(mesh);
   return id;
 }

@@ -19,7 +19,9 @@ namespace Tangent_vector_fields {
 namespace {
 
 const char file_magic[8] = {'T', 'V', 'F', 'B', 'A', 'S', 'I', 'S'};
-const std::uint32_t file_version = 2; // 2: eigenfunctions in double or float32 (a precision byte)
+// 2: eigenfunctions in double or float32 (a precision byte); 3: the mesh identity read from each
+// face's smallest corner (`legacy_mesh_identity` before)
+const std::uint32_t file_version = 3;
 
 // The squared MX norms of the columns of `A F` scaled by 1 / values, a few columns at a time
 // (a basis of many elements on a large mesh would not fit at once).
@@ -75,7 +77,9 @@ Eigenfield_basis Eigenfield_basis::load(std::shared_ptr<const Hodge_solver> solv
   std::ifstream in = internal::open_binary_file(path, "spectral basis", bytes);
   internal::Binary_reader r(in, path, bytes, "spectral basis");
   const Intrinsic_mesh& mesh = basis.operators().mesh();
-  const std::uint32_t version = r.expect_header(file_magic, 1, file_version, internal::mesh_identity(mesh));
+  const std::uint32_t version = r.expect_header(file_magic, 1, file_version, [&](std::uint32_t v) {
+    return v < 3 ? internal::legacy_mesh_identity(mesh) : internal::mesh_identity(mesh);
+  });
   const Eigen::Index nv = mesh.number_of_vertices(), ne = mesh.number_of_interior_edges(), nf = mesh.number_of_faces();
   basis.exact_values_ = r.matrix(-1, 1, "exact eigenvalues");
   auto functions = [&](Eigen::Index rows, Eigen::Index cols, const char* what) {

@@ -15,6 +15,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <fstream>
+#include <functional>
 #include <istream>
 #include <ostream>
 #include <string>
@@ -97,6 +98,10 @@ public:
   /// The same accepting any version in [oldest, newest]; returns the file's.
   std::uint32_t expect_header(const char (&magic)[8], std::uint32_t oldest, std::uint32_t newest,
                               const Mesh_identity& mesh);
+  /// The same with the identity the file's version holds (a format that changed how it
+  /// identifies meshes still reads its older files).
+  std::uint32_t expect_header(const char (&magic)[8], std::uint32_t oldest, std::uint32_t newest,
+                              const std::function<Mesh_identity(std::uint32_t version)>& mesh_of_version);
   [[noreturn]] void fail(const std::string& why) const;
 
 private:
