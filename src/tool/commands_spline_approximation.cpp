@@ -6,6 +6,7 @@
 
 #include "tool.h"
 
+#include <CGAL/Model_reduction/Vtk_polydata.h>
 #include <CGAL/Spline_approximation/Spline_fit.h>
 
 #include <algorithm>
@@ -153,8 +154,7 @@ std::ofstream open_output(const std::string& path)
 {
   std::ofstream out(path);
   if(!out) throw Tool_error("cannot open '" + path + "' for writing: " + std::strerror(errno));
-  out.imbue(std::locale::classic());
-  out.precision(17);
+  CGAL::Model_reduction::internal::prepare_exact_output(out);
   return out;
 }
 

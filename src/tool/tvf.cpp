@@ -124,7 +124,8 @@ int main(int argc, char** argv)
   }
   if(name == "--version")
   {
-    std::cout << "tvf 0.1.0 (CGAL Tangent_vector_fields)\n";
+    // The packages whose commands the tool has.
+    std::cout << "tvf 0.1.0 (CGAL Tangent_vector_fields, Vibration_modes, Spline_approximation)\n";
     return 0;
   }
   const Subcommand* command = find_command(name);
