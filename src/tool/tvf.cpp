@@ -51,6 +51,9 @@ const std::vector<Command_system>& systems()
        smoothest_command},
       {"singularities", "the singular vertices of an n-field with their indices (.sing), Poincare-Hopf checked",
        singularities_command}}},
+    {"Hyper-reduced Projective Dynamics (Chapter 3, CGAL Projective_dynamics)",
+     {{"simulate", "an elastic solid (.mesh tetrahedra) or shell in a scene (drop, cantilever, grab), full or hyper-reduced",
+       simulate_command}}},
     {"Vibration modes and compressed vibration modes (Chapter 5, CGAL Vibration_modes)",
      {{"modes", "the lowest vibration modes of a shell or a Laplacian, or compressed (local) modes; .vtp output",
        modes_command}}},
@@ -125,7 +128,7 @@ int main(int argc, char** argv)
   if(name == "--version")
   {
     // The packages whose commands the tool has.
-    std::cout << "tvf 0.1.0 (CGAL Tangent_vector_fields, Vibration_modes, Spline_approximation)\n";
+    std::cout << "tvf 0.1.0 (CGAL Tangent_vector_fields, Projective_dynamics, Vibration_modes, Spline_approximation)\n";
     return 0;
   }
   const Subcommand* command = find_command(name);

@@ -1,0 +1,345 @@
+// Copyright (c) 2026 The Projective_dynamics authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// tvf simulate: Projective Dynamics (Chapter 3) of a solid (tetrahedra of a Medit .mesh file)
+// or a shell (a surface mesh), full or hyper-reduced, in a scripted scene (a drop on a floor, a
+// cantilever, a grabbed end lifted), one OBJ or VTP file per frame (VTP with a ParaView .pvd
+// series).
+
+#include "tool.h"
+
+#include <CGAL/Model_reduction/Vtk_polydata.h>
+#include <CGAL/Projective_dynamics/Reduced_simulator.h>
+#include <CGAL/Projective_dynamics/Simulator.h>
+#include <CGAL/Projective_dynamics/make_models.h>
+#include <CGAL/Projective_dynamics/medit_io.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <vector>
+
+namespace tvf_tool {
+
+namespace PD = CGAL::Projective_dynamics;
+namespace MR = CGAL::Model_reduction;
+
+namespace {
+
+struct Body
+{
+  PD::Elastic_model model;
+  std::vector<PD::Triangle> surface; // what the frames show
+  bool solid = false;
+  int elements = 0;
+};
+
+Body read_body(const std::string& path, const Command_line& command)
+{
+  const double stiffness = command.get<double>("stiffness"), density = command.get<double>("density");
+  const std::string extension = std::filesystem::path(path).extension().string();
+  try
+  {
+    if(extension == ".mesh")
+    {
+      const PD::Tet_mesh tets = PD::read_medit(path);
+      PD::check_tet_mesh(tets);
+      Body body{PD::make_solid_model(tets, PD::parameters::strain_stiffness(stiffness).density(density)),
+                tets.triangles.empty() ? PD::boundary_triangles(tets.points, tets.tetrahedra) : tets.triangles, true,
+                int(tets.tetrahedra.size())};
+      return body;
+    }
+    const Tool_mesh mesh(path, command.mollify());
+    const auto& m = mesh.intrinsic();
+    std::vector<PD::Point> points(std::size_t(m.number_of_vertices()));
+    for(int v = 0; v < m.number_of_vertices(); ++v) points[std::size_t(v)] = m.position(v);
+    std::vector<PD::Triangle> triangles(std::size_t(m.number_of_faces()));
+    for(int f = 0; f < m.number_of_faces(); ++f) triangles[std::size_t(f)] = m.face_vertices(f);
+    return Body{PD::make_shell_model(points, triangles,
+                                     PD::parameters::strain_stiffness(stiffness).density(density).bending_stiffness(
+                                         command.get<double>("bending"))),
+                triangles, false, int(triangles.size())};
+  }
+  catch(const MR::Invalid_input& e)
+  {
+    throw Tool_error("'" + path + "': " + one_line(e.what()));
+  }
+  catch(const MR::Invalid_mesh& e)
+  {
+    throw Tool_error("'" + path + "': " + one_line(e.what()));
+  }
+}
+
+// The scene's handles, placed from the rest shape's bounding box: gravity along -z; the
+// cantilever's and the grab's axis is the longer horizontal side of the box.
+struct Scene
+{
+  std::string name;
+  double floor_height = 0;
+  std::vector<int> pinned, grabbed;
+  PD::Positions grab_start;
+  double lift = 0; // of the grabbed vertices over the whole run
+};
+
+Scene make_scene(const std::string& name, const PD::Positions& rest)
+{
+  const Eigen::RowVector3d lo = rest.colwise().minCoeff(), hi = rest.colwise().maxCoeff();
+  const Eigen::RowVector3d extent = hi - lo;
+  const int axis = extent[0] >= extent[1] ? 0 : 1;
+  const double length = extent[axis];
+  Scene s;
+  s.name = name;
+  if(name == "drop")
+  {
+    // A quarter of the height below the body (of its largest side if it is flat).
+    s.floor_height = lo[2] - 0.25 * std::max(extent[2], 0.1 * extent.maxCoeff());
+    return s;
+  }
+  // Cantilever and grab: the vertices within 5% of the length of one end are pinned.
+  for(Eigen::Index v = 0; v < rest.rows(); ++v)
+  {
+    if(rest(v, axis) <= lo[axis] + 0.05 * length) s.pinned.push_back(int(v));
+    if(name == "grab" && rest(v, axis) >= hi[axis] - 0.05 * length) s.grabbed.push_back(int(v));
+  }
+  if(name == "grab")
+  {
+    s.grab_start.resize(Eigen::Index(s.grabbed.size()), 3);
+    for(std::size_t i = 0; i < s.grabbed.size(); ++i) s.grab_start.row(Eigen::Index(i)) = rest.row(s.grabbed[i]);
+    s.lift = 0.3 * length;
+  }
+  return s;
+}
+
+class Frame_writer
+{
+public:
+  Frame_writer(std::string folder, std::string format, std::vector<PD::Triangle> surface, double time_step)
+    : folder_(std::move(folder)), format_(std::move(format)), surface_(std::move(surface)), time_step_(time_step)
+  {
+    if(folder_.empty()) return;
+    std::error_code error;
+    std::filesystem::create_directories(folder_, error);
+    if(error) throw Tool_error("cannot make the folder '" + folder_ + "': " + error.message());
+  }
+  void write(int frame, const PD::Positions& q)
+  {
+    if(folder_.empty()) return;
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%04d.%s", frame, format_.c_str());
+    const std::string path = folder_ + "/" + name;
+    std::ofstream out(path);
+    if(!out) throw Tool_error("cannot open '" + path + "' for writing");
+    MR::internal::prepare_exact_output(out);
+    if(format_ == "obj")
+    {
+      for(Eigen::Index v = 0; v < q.rows(); ++v) out << "v " << q(v, 0) << ' ' << q(v, 1) << ' ' << q(v, 2) << '\n';
+      for(const PD::Triangle& t : surface_) out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+    }
+    else
+    {
+      MR::Vtk_polydata data;
+      data.points.resize(std::size_t(q.rows()));
+      for(Eigen::Index v = 0; v < q.rows(); ++v) data.points[std::size_t(v)] = {q(v, 0), q(v, 1), q(v, 2)};
+      for(const PD::Triangle& t : surface_) data.polygons.push_back({t[0], t[1], t[2]});
+      MR::write_vtk_polydata(out, data);
+    }
+    out.close();
+    if(!out) throw Tool_error("writing '" + path + "' failed");
+    names_.push_back(name);
+  }
+  // The ParaView series (VTP frames): one file listing every frame at its time.
+  std::string finish() const
+  {
+    if(folder_.empty() || format_ != "vtp") return std::string();
+    const std::string path = folder_ + "/frames.pvd";
+    std::ofstream out(path);
+    MR::internal::prepare_exact_output(out);
+    out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n";
+    for(std::size_t i = 0; i < names_.size(); ++i)
+      out << "    <DataSet timestep=\"" << double(i) * time_step_ << "\" file=\"" << names_[i] << "\"/>\n";
+    out << "  </Collection>\n</VTKFile>\n";
+    out.close();
+    if(!out) throw Tool_error("writing '" + path + "' failed");
+    return path;
+  }
+  std::size_t count() const { return names_.size(); }
+
+private:
+  std::string folder_, format_;
+  std::vector<PD::Triangle> surface_;
+  double time_step_;
+  std::vector<std::string> names_;
+};
+
+double percentile(std::vector<double> v, double p)
+{
+  if(v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  return v[std::min(v.size() - 1, std::size_t(p * double(v.size())))];
+}
+
+// Runs the scene on either simulator (their scene interfaces agree) and reports what moved.
+template <class Simulator>
+void run_scene(Simulator& sim, const Scene& scene, const PD::Positions& rest, int frames, Frame_writer& writer)
+{
+  if(scene.name == "drop") sim.add_floor(Eigen::Vector3d(0, 0, scene.floor_height), Eigen::Vector3d(0, 0, 1));
+  if(!scene.pinned.empty()) sim.set_pinned_vertices(scene.pinned);
+  if(!scene.grabbed.empty()) sim.grab(scene.grabbed, scene.grab_start);
+  writer.write(0, sim.positions());
+  std::vector<double> step_ms;
+  double local = 0, global = 0, lowest = rest.col(2).minCoeff();
+  for(int f = 1; f <= frames; ++f)
+  {
+    if(!scene.grabbed.empty())
+    {
+      PD::Positions target = scene.grab_start;
+      target.col(2).array() += scene.lift * double(f) / frames;
+      sim.move_grabbed(target);
+    }
+    sim.step();
+    const auto& t = sim.last_step_timings();
+    step_ms.push_back(1e3 * t.total);
+    local += t.local;
+    global += t.global;
+    const PD::Positions q = sim.positions();
+    lowest = std::min(lowest, q.col(2).minCoeff());
+    writer.write(f, q);
+  }
+  double sum = 0;
+  for(double ms : step_ms) sum += ms;
+  say("%d frames: step %.3f ms mean, %.3f ms p90 (local %.3f, global %.3f ms mean)\n", frames, sum / frames,
+      percentile(step_ms, 0.9), 1e3 * local / frames, 1e3 * global / frames);
+  const PD::Positions q = sim.positions();
+  if(scene.name == "drop")
+    say("floor at z = %.6g; lowest vertex: %.6g at the end, %.6g over the run\n", scene.floor_height,
+        q.col(2).minCoeff(), lowest);
+  if(!scene.pinned.empty())
+  {
+    double pin_drift = 0;
+    for(int v : scene.pinned) pin_drift = std::max(pin_drift, (q.row(v) - rest.row(v)).norm());
+    say("pinned vertices: %zu, largest distance from their rest positions %.3g\n", scene.pinned.size(), pin_drift);
+  }
+  if(scene.name == "cantilever")
+    say("sag: mean change of height %.6g, largest drop %.6g\n", (q.col(2) - rest.col(2)).mean(),
+        (rest.col(2) - q.col(2)).maxCoeff());
+  if(!scene.grabbed.empty())
+  {
+    double miss = 0;
+    for(std::size_t i = 0; i < scene.grabbed.size(); ++i)
+    {
+      Eigen::RowVector3d target = scene.grab_start.row(Eigen::Index(i));
+      target[2] += scene.lift;
+      miss = std::max(miss, (q.row(scene.grabbed[i]) - target).norm());
+    }
+    say("grabbed vertices: %zu lifted by %.6g; largest distance from their targets at the end %.3g\n",
+        scene.grabbed.size(), scene.lift, miss);
+  }
+}
+
+} // namespace
+
+int simulate_command(const Arguments& args)
+{
+  Command_line command(
+      "tvf simulate <body.mesh|surface mesh> [--scene drop|cantilever|grab] [--frames N] [--reduced] [-o FOLDER]",
+      "Simulates an elastic body with Projective Dynamics (Chapter 3, SPEC 12): a solid from the tetrahedra of a\n"
+      "Medit .mesh file (CGAL Mesh_3, TetGen -g, Gmsh), or a shell from a surface mesh (stretching and\n"
+      "bending).  Units are the mesh's, with gravity 9.81 along -z.  Scenes: 'drop' (falls onto a floor a\n"
+      "quarter of its height below it), 'cantilever' (the vertices within 5% of one end of its longer\n"
+      "horizontal side pinned, sagging under gravity), 'grab' (pinned as the cantilever, the other end's\n"
+      "vertices grabbed and lifted by 0.3 of the length over the run).  Full PD by default; --reduced for\n"
+      "hyper-reduced PD (its sizes capped to what the mesh allows).  Prints the step time (local and global)\n"
+      "and what the scene moved; -o writes frame_0000.obj ... (or .vtp with a ParaView frames.pvd series).");
+  command.positional("body", "a Medit .mesh file (a solid) or a surface mesh (a shell)");
+  command.group("scene").add_options()
+    ("scene", po::value<std::string>()->value_name("S")->default_value("drop"), "drop, cantilever or grab")
+    ("frames", po::value<int>()->value_name("N")->default_value(60), "time steps to simulate")
+    ("time-step", po::value<double>()->value_name("H")->default_value(1.0 / 30), "seconds per step")
+    ("iterations", po::value<int>()->value_name("K")->default_value(10), "local/global iterations per step")
+    ("threads", po::value<int>()->value_name("T")->default_value(0), "threads of the local steps (0: all cores)");
+  command.group("material").add_options()
+    ("stiffness", po::value<double>()->value_name("K")->default_value(1e7), "strain stiffness (per volume or area)")
+    ("density", po::value<double>()->value_name("RHO")->default_value(1e3), "mass per volume (solids) or area (shells)")
+    ("bending", po::value<double>()->value_name("B")->default_value(0.0), "bending stiffness of shells");
+  command.group("reduction").add_options()
+    ("reduced", "hyper-reduced PD instead of full PD")
+    ("samples", po::value<int>()->value_name("M")->default_value(150),
+     "position samples (k = 4M coordinates; by default at most one per 16 vertices)")
+    ("projection-columns", po::value<int>()->value_name("L")->default_value(120), "projection subspace size per group")
+    ("sampled-elements", po::value<int>()->value_name("S")->default_value(1000), "sampled elements per group");
+  command.group("output").add_options()
+    ("output,o", po::value<std::string>()->value_name("FOLDER"), "write one file per frame into FOLDER")
+    ("format", po::value<std::string>()->value_name("F")->default_value("obj"), "obj, or vtp (with frames.pvd)");
+  if(!command.parse(args)) return 0; // --help
+  const std::string scene_name = command.get<std::string>("scene"), format = command.get<std::string>("format");
+  if(scene_name != "drop" && scene_name != "cantilever" && scene_name != "grab")
+    throw Usage_error("'--scene' must be drop, cantilever or grab, not '" + scene_name + "'");
+  if(format != "obj" && format != "vtp") throw Usage_error("'--format' must be obj or vtp, not '" + format + "'");
+  const int frames = command.get<int>("frames");
+  if(frames < 1) throw Usage_error("'--frames' must be at least 1");
+
+  const std::string path = command.positional_value();
+  Step reading("reading the body");
+  Body body = read_body(path, command);
+  reading.done();
+  const PD::Positions rest = body.model.rest_positions();
+  say("body: %s, a %s, %d vertices, %d %s, %d element groups\n", path.c_str(), body.solid ? "solid" : "shell",
+      body.model.number_of_vertices(), body.elements, body.solid ? "tetrahedra" : "triangles",
+      body.model.number_of_groups());
+  const Scene scene = make_scene(scene_name, rest);
+
+  PD::Simulator_options options;
+  options.time_step = command.get<double>("time-step");
+  options.iterations = command.get<int>("iterations");
+  options.threads = command.get<int>("threads");
+  Frame_writer writer(command.has("output") ? command.get<std::string>("output") : std::string(), format, body.surface,
+                      options.time_step);
+  try
+  {
+    if(command.has("reduced"))
+    {
+      const int n = body.model.number_of_vertices();
+      PD::Reduction_options r;
+      // Unless asked for, at most one sample per 16 vertices: a sample's support must hold
+      // enough vertices to span its affine maps.
+      r.samples = command.has("samples") ? std::min(command.get<int>("samples"), n)
+                                         : std::min(command.get<int>("samples"), std::max(1, n / 16));
+      r.constraint_samples = std::min(r.constraint_samples, n);
+      r.projection_columns = std::min(command.get<int>("projection-columns"), 4 * r.constraint_samples);
+      r.sampled_elements = std::max(command.get<int>("sampled-elements"), r.projection_columns + 20);
+      Step precomputation("hyper-reduced PD precomputation");
+      PD::Reduced_simulator sim(std::move(body.model), options, r);
+      precomputation.done();
+      say("hyper-reduced PD: %d position samples (k = %d), l = %d, s = %d; precomputation %.3f s\n", r.samples,
+          sim.dimension(), r.projection_columns, r.sampled_elements, precomputation.seconds());
+      run_scene(sim, scene, rest, frames, writer);
+    }
+    else
+    {
+      Step factor("full PD set-up");
+      PD::Simulator sim(std::move(body.model), options);
+      factor.done();
+      say("full PD: %ld unknowns, set-up %.3f s\n", long(rest.rows()), factor.seconds());
+      run_scene(sim, scene, rest, frames, writer);
+    }
+  }
+  catch(const MR::Invalid_input& e)
+  {
+    throw Tool_error("'" + path + "': " + one_line(e.what()));
+  }
+  catch(const MR::Numerical_failure& e)
+  {
+    throw Tool_error("'" + path + "': " + one_line(e.what()));
+  }
+  if(writer.count() > 0)
+  {
+    const std::string series = writer.finish();
+    say("wrote %zu frames to %s%s%s\n", writer.count(), command.get<std::string>("output").c_str(),
+        series.empty() ? "" : ", series ", series.c_str());
+  }
+  return 0;
+}
+
+} // namespace tvf_tool
