@@ -475,6 +475,20 @@ PD::Elastic_model model_of(const PD::Tet_mesh& mesh)
   return PD::make_solid_model(mesh, params::strain_stiffness(1e4).density(1e3));
 }
 
+// The box's tetrahedra in two groups (halves of 162), of stiffness 1e4 and 2e4.
+PD::Elastic_model two_group_box()
+{
+  const PD::Tet_mesh mesh = small_box();
+  PD::Positions x(Eigen::Index(mesh.points.size()), 3);
+  for(std::size_t i = 0; i < mesh.points.size(); ++i)
+    for(int c = 0; c < 3; ++c) x(Eigen::Index(i), c) = mesh.points[i][std::size_t(c)];
+  PD::Elastic_model model(x, PD::lumped_masses(mesh.points, mesh.tetrahedra, 1e3));
+  const std::size_t half = mesh.tetrahedra.size() / 2;
+  model.add_tet_strain({mesh.tetrahedra.begin(), mesh.tetrahedra.begin() + std::ptrdiff_t(half)}, 1e4);
+  model.add_tet_strain({mesh.tetrahedra.begin() + std::ptrdiff_t(half), mesh.tetrahedra.end()}, 2e4);
+  return model;
+}
+
 } // namespace
 
 TEST(ProjectiveDynamicsReduced, SavedPrecomputationLoadsToTheSameTrajectory)
@@ -506,6 +520,15 @@ TEST(ProjectiveDynamicsReduced, SavedPrecomputationLoadsToTheSameTrajectory)
     EXPECT_EQ(largest, 0.0) << "hyper " << hyper << ": the loaded simulator's trajectory differs";
     // It moved (fell onto the floor), so the comparison says something.
     EXPECT_GT((a.back() - box_model().rest_positions()).norm(), 0.01) << "hyper " << hyper;
+    // Two element groups, each with its own stiffness, saved and loaded.
+    {
+      PD::Reduced_simulator two(two_group_box(), o, r);
+      two.save(path);
+      PD::Reduced_simulator again = PD::Reduced_simulator::load(two_group_box(), path, o, r);
+      EXPECT_EQ(trajectory(two, 10).back(), trajectory(again, 10).back()) << "hyper " << hyper << ", two groups";
+      EXPECT_THROW_REASON(PD::Reduced_simulator::load(box_model(), path, o, r), PD::Invalid_input, "made for 2 element groups, the model has 1");
+      made.save(path);
+    }
     // The named-parameter form, and its own stiffness and density (masses are not saved).
     if(hyper)
       EXPECT_NO_THROW(PD::Reduced_simulator::load(
@@ -640,8 +663,9 @@ TEST(ProjectiveDynamicsReduced, PrecomputationReportsProgressAndCanBeCancelled)
     PD::Reduction_options r = small_hyper();
     r.hyper_reduction = hyper;
     r.progress = [&](const PD::Reduced_precomputation_progress& p) { return seen.push_back(p), true; };
-    PD::Reduced_simulator sim(box_model(), PD::Simulator_options(), r);
-    ASSERT_GE(seen.size(), 3u);
+    // Two element groups: progress within the stages, per group.
+    PD::Reduced_simulator sim(two_group_box(), PD::Simulator_options(), r);
+    ASSERT_GE(seen.size(), hyper ? 7u : 4u);
     EXPECT_EQ(seen.front().fraction, 0.0);
     EXPECT_EQ(seen.front().stage, "position subspace");
     for(std::size_t q = 1; q < seen.size(); ++q)
