@@ -92,7 +92,7 @@ struct Reduced_step_timings
   double contact = 0;
   double total = 0;
   double factorization = 0;  ///< the last factorisation of K
-  double precomputation = 0; ///< subspaces, projected matrices, fits (constructor)
+  double precomputation = 0; ///< subspaces, projected matrices, fits (constructor), or reading them (`load`)
 };
 
 class Reduced_simulator
