@@ -538,6 +538,28 @@ TEST(ProjectiveDynamicsReduced, SavedPrecomputationLoadsToTheSameTrajectory)
   }
 }
 
+TEST(ProjectiveDynamicsReduced, SavedExplicitBasisLoadsToTheSameTrajectory)
+{
+  // An explicit basis (the identity, every element projected) is saved as well; its samples
+  // option is not compared.
+  const PD::Elastic_model model = box_model();
+  const int n = model.number_of_vertices();
+  Eigen::SparseMatrix<double, Eigen::RowMajor> identity(n, n);
+  identity.setIdentity();
+  PD::Reduction_options r = small_hyper();
+  r.hyper_reduction = false;
+  const PD::Simulator_options o;
+  const std::string path = tvf_test::scratch_path("identity.pdr");
+  PD::Reduced_simulator made(model, identity, o, r);
+  made.save(path);
+  r.samples = 3;
+  PD::Reduced_simulator loaded = PD::Reduced_simulator::load(model, path, o, r);
+  EXPECT_TRUE(loaded.samples().empty());
+  EXPECT_EQ(trajectory(made, 10).back(), trajectory(loaded, 10).back());
+  r.hyper_reduction = true;
+  EXPECT_THROW_REASON(PD::Reduced_simulator::load(model, path, o, r), PD::Invalid_input, "hyper_reduction false in the file, true given");
+}
+
 TEST(ProjectiveDynamicsReduced, LoadRefusesAnotherModelOrOptions)
 {
   const std::string path = tvf_test::scratch_path("box.pdr");
