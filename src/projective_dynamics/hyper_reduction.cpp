@@ -11,6 +11,7 @@
 #include "hyper_reduction.h"
 
 #include <algorithm>
+#include <functional>
 #include <string>
 
 namespace CGAL {
@@ -22,25 +23,22 @@ typedef Eigen::SparseMatrix<double, Eigen::RowMajor> Sparse;
 }
 
 Hyper_sampling sample_and_fit(const Elastic_model& model, const Reduction_options& r, const Sparse& U, const Sparse& Ut,
-                              const std::vector<std::vector<int>>& members, std::vector<Reduced_group>& groups)
+                              const std::vector<std::vector<int>>& members, std::vector<Reduced_group>& groups,
+                              const std::function<void(const char*, double)>& report)
 {
-  Hyper_sampling h;
   const auto& elements = model.elements();
   const Sparse& S = model.selection_matrix();
   const internal::Element_graph graph = internal::element_graph(model);
   const std::vector<int> spots = internal::farthest_point_samples(graph, std::min(r.sampled_elements, model.number_of_vertices()), nullptr);
   std::vector<std::vector<int>> vertex_elements(static_cast<std::size_t>(model.number_of_vertices()));
-  std::vector<std::vector<int>> element_vertices(elements.size());
   for(int e = 0; e < model.number_of_elements(); ++e)
-  {
-    element_vertices[std::size_t(e)] = internal::element_vertices(model, e);
-    for(int v : element_vertices[std::size_t(e)]) vertex_elements[std::size_t(v)].push_back(e);
-  }
-  int stacked = 0;
+    for(int v : internal::element_vertices(model, e)) vertex_elements[std::size_t(v)].push_back(e);
+  if(report) report("sampled elements", 0);
   for(std::size_t g = 0; g < groups.size(); ++g)
   {
     Reduced_group& G = groups[g];
     const std::vector<int>& mine = members[g];
+    if(report && g > 0) report("projection subspaces", double(g) / double(groups.size()));
     if(mine.empty()) continue;
     const int l = r.projection_columns;
     if(int(mine.size()) < l + 20)
@@ -69,24 +67,43 @@ Hyper_sampling sample_and_fit(const Elastic_model& model, const Reduction_option
     for(std::size_t q = 0; q < need; ++q) G.sampled.push_back(rest[q * rest.size() / need]);
     std::sort(G.sampled.begin(), G.sampled.end());
 
-    G.first_sampled_row = stacked;
     std::vector<int> local_rows;
     for(int e : G.sampled)
       for(int q = 0; q < elements[std::size_t(e)].rows; ++q) local_rows.push_back(elements[std::size_t(e)].first_row + q - G.first_row);
-    G.sampled_rows = int(local_rows.size());
+    G.JV.resize(Eigen::Index(local_rows.size()), l);
+    for(std::size_t q = 0; q < local_rows.size(); ++q) G.JV.row(Eigen::Index(q)) = V.row(local_rows[q]);
+    const Sparse Sg = S.middleRows(G.first_row, G.rows);
+    const Eigen::MatrixXd T = Sparse(Sg.transpose()) * (G.measure.asDiagonal() * V);
+    G.F = Ut * T;
+  }
+  Hyper_sampling h = finish_sampling(model, U, groups);
+  if(report) report("projection subspaces", 1);
+  return h;
+}
+
+Hyper_sampling finish_sampling(const Elastic_model& model, const Sparse& U, std::vector<Reduced_group>& groups)
+{
+  Hyper_sampling h;
+  const auto& elements = model.elements();
+  const Sparse& S = model.selection_matrix();
+  int stacked = 0;
+  for(std::size_t g = 0; g < groups.size(); ++g)
+  {
+    Reduced_group& G = groups[g];
+    if(G.sampled.empty()) continue;
+    G.first_sampled_row = stacked;
+    G.sampled_rows = 0;
+    for(int e : G.sampled) G.sampled_rows += elements[std::size_t(e)].rows;
     stacked += G.sampled_rows;
-    G.JV.resize(G.sampled_rows, l);
-    for(int q = 0; q < G.sampled_rows; ++q) G.JV.row(q) = V.row(local_rows[std::size_t(q)]);
     G.fit.compute(G.JV.transpose() * G.JV);
     if(G.fit.info() != Eigen::Success)
       throw Numerical_failure("the fitting matrix (J V)^T (J V) of group " + std::to_string(g) +
                               " is singular: more sampled elements or fewer projection columns");
-    const Sparse Sg = S.middleRows(G.first_row, G.rows);
-    const Eigen::MatrixXd T = Sparse(Sg.transpose()) * (G.measure.asDiagonal() * V);
-    G.F = Ut * T;
     G.first_sampled = int(h.sampled_all.size());
     for(int e : G.sampled) h.sampled_all.push_back(e);
   }
+  std::vector<std::vector<int>> element_vertices(elements.size());
+  for(int e : h.sampled_all) element_vertices[std::size_t(e)] = internal::element_vertices(model, e);
   // The used vertices and the sampled rows of S on them.
   std::vector<int> index(std::size_t(model.number_of_vertices()), -1);
   for(int e : h.sampled_all)

@@ -13,6 +13,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/SparseCore>
 
+#include <functional>
 #include <vector>
 
 namespace CGAL {
@@ -44,12 +45,22 @@ struct Hyper_sampling
 };
 
 /// Fills the hyper-reduction members of `groups` (`members[g]`: the elements of group g).
+/// `report(stage, fraction)`, if given, is told when the element samples are chosen (0) and
+/// after each group (the fraction of groups done).
 /// \throws Invalid_input for a group of fewer than l + 20 elements; Numerical_failure for a
 ///         singular fit.
 Hyper_sampling sample_and_fit(const Elastic_model& model, const Reduction_options& r,
                               const Eigen::SparseMatrix<double, Eigen::RowMajor>& U,
                               const Eigen::SparseMatrix<double, Eigen::RowMajor>& Ut,
-                              const std::vector<std::vector<int>>& members, std::vector<Reduced_group>& groups);
+                              const std::vector<std::vector<int>>& members, std::vector<Reduced_group>& groups,
+                              const std::function<void(const char*, double)>& report = {});
+
+/// What `sample_and_fit` derives from the groups' sampled elements (set `sampled`, `JV` and `F`
+/// of each group): each group's `first_sampled`, `first_sampled_row`, `sampled_rows` and `fit`,
+/// and the used vertices with their rows of S and U (used by a loaded precomputation).
+/// \throws Numerical_failure for a singular fit.
+Hyper_sampling finish_sampling(const Elastic_model& model, const Eigen::SparseMatrix<double, Eigen::RowMajor>& U,
+                               std::vector<Reduced_group>& groups);
 
 } // namespace internal
 } // namespace Projective_dynamics

@@ -13,6 +13,7 @@
 namespace CGAL {
 namespace Projective_dynamics {
 
+using Model_reduction::Cancelled;
 using Model_reduction::Invalid_input;
 using Model_reduction::Invalid_mesh;
 using Model_reduction::Mesh_defect;
