@@ -250,7 +250,8 @@ int simulate_command(const Arguments& args)
       "quarter of its height below it), 'cantilever' (the vertices within 5% of one end of its longer\n"
       "horizontal side pinned, sagging under gravity), 'grab' (pinned as the cantilever, the other end's\n"
       "vertices grabbed and lifted by 0.3 of the length over the run).  Full PD by default; --reduced for\n"
-      "hyper-reduced PD (its sizes capped to what the mesh allows).  Prints the step time (local and global)\n"
+      "hyper-reduced PD (its sizes capped to what the mesh allows; --save and --load keep its\n"
+      "precomputation with the body's identity).  Prints the step time (local and global)\n"
       "and what the scene moved; -o writes frame_0000.obj ... (or .vtp with a ParaView frames.pvd series).");
   command.positional("body", "a Medit .mesh file (a solid) or a surface mesh (a shell)");
   command.group("scene").add_options()
@@ -268,7 +269,10 @@ int simulate_command(const Arguments& args)
     ("samples", po::value<int>()->value_name("M")->default_value(150),
      "position samples (k = 4M coordinates; by default at most one per 16 vertices)")
     ("projection-columns", po::value<int>()->value_name("L")->default_value(120), "projection subspace size per group")
-    ("sampled-elements", po::value<int>()->value_name("S")->default_value(1000), "sampled elements per group");
+    ("sampled-elements", po::value<int>()->value_name("S")->default_value(1000), "sampled elements per group")
+    ("save", po::value<std::string>()->value_name("FILE.pdr"), "save the precomputation (for --load)")
+    ("load", po::value<std::string>()->value_name("FILE.pdr"),
+     "instead of precomputing: load one saved for this body with the same reduction options");
   command.group("output").add_options()
     ("output,o", po::value<std::string>()->value_name("FOLDER"), "write one file per frame into FOLDER")
     ("format", po::value<std::string>()->value_name("F")->default_value("obj"), "obj, or vtp (with frames.pvd)");
@@ -277,6 +281,8 @@ int simulate_command(const Arguments& args)
   if(scene_name != "drop" && scene_name != "cantilever" && scene_name != "grab")
     throw Usage_error("'--scene' must be drop, cantilever or grab, not '" + scene_name + "'");
   if(format != "obj" && format != "vtp") throw Usage_error("'--format' must be obj or vtp, not '" + format + "'");
+  if((command.has("save") || command.has("load")) && !command.has("reduced"))
+    throw Usage_error("'--save' and '--load' keep the hyper-reduced precomputation: give '--reduced'");
   const int frames = command.get<int>("frames");
   if(frames < 1) throw Usage_error("'--frames' must be at least 1");
 
@@ -309,11 +315,26 @@ int simulate_command(const Arguments& args)
       r.constraint_samples = std::min(r.constraint_samples, n);
       r.projection_columns = std::min(command.get<int>("projection-columns"), 4 * r.constraint_samples);
       r.sampled_elements = std::max(command.get<int>("sampled-elements"), r.projection_columns + 20);
-      Step precomputation("hyper-reduced PD precomputation");
-      PD::Reduced_simulator sim(std::move(body.model), options, r);
+      Progress_bar bar;
+      r.progress = [&](const PD::Reduced_precomputation_progress& p) {
+        bar.update(p.stage, p.fraction);
+        return true;
+      };
+      Step precomputation(command.has("load") ? "loading the precomputation" : "hyper-reduced PD precomputation");
+      PD::Reduced_simulator sim = command.has("load")
+                                      ? PD::Reduced_simulator::load(std::move(body.model), command.get<std::string>("load"),
+                                                                    options, r)
+                                      : PD::Reduced_simulator(std::move(body.model), options, r);
+      bar.finish();
       precomputation.done();
-      say("hyper-reduced PD: %d position samples (k = %d), l = %d, s = %d; precomputation %.3f s\n", r.samples,
-          sim.dimension(), r.projection_columns, r.sampled_elements, precomputation.seconds());
+      say("hyper-reduced PD: %d position samples (k = %d), l = %d, s = %d; %s %.3f s\n", r.samples, sim.dimension(),
+          r.projection_columns, r.sampled_elements, command.has("load") ? "loaded in" : "precomputation",
+          precomputation.seconds());
+      if(command.has("save"))
+      {
+        sim.save(command.get<std::string>("save"));
+        say("saved the precomputation to %s\n", command.get<std::string>("save").c_str());
+      }
       run_scene(sim, scene, rest, frames, writer);
     }
     else

@@ -73,3 +73,28 @@ tvf_cli_test(simulate.no_frames usage ARGS simulate ${CLI_OUT}/box.mesh --frames
              STDERR "'--frames' must be at least 1")
 tvf_cli_test(simulate.truncated_mesh failure ARGS simulate ${CLI_OUT}/broken_box.mesh
              STDERR "broken_box.mesh': .*line")
+
+# The hyper-reduced precomputation saved, then loaded by a second run: the same frames, byte for
+# byte; loaded with other reduction options: refused with the reason.
+tvf_cli_test(simulate.reduced_save success
+             ARGS simulate ${CLI_OUT}/box.mesh --scene cantilever --frames 5 --reduced --save ${CLI_OUT}/box.pdr
+                  -o ${CLI_OUT}/reduced_saved
+             OUTPUTS ${CLI_OUT}/box.pdr ${CLI_OUT}/reduced_saved/frame_0005.obj
+             STDOUT "precomputation [0-9.]+ s\nsaved the precomputation to"
+             SETUP simulate_reduced_saved)
+tvf_cli_test(simulate.reduced_load success
+             ARGS simulate ${CLI_OUT}/box.mesh --scene cantilever --frames 5 --reduced --load ${CLI_OUT}/box.pdr
+                  -o ${CLI_OUT}/reduced_loaded
+             OUTPUTS ${CLI_OUT}/reduced_loaded/frame_0005.obj
+             STDOUT "loaded in [0-9.]+ s"
+             SETUP simulate_reduced_loaded REQUIRES simulate_reduced_saved)
+add_test(NAME cli.simulate.reduced_load.same_frames
+         COMMAND ${CMAKE_COMMAND} -E compare_files ${CLI_OUT}/reduced_saved/frame_0005.obj
+                 ${CLI_OUT}/reduced_loaded/frame_0005.obj)
+set_tests_properties(cli.simulate.reduced_load.same_frames PROPERTIES FIXTURES_REQUIRED simulate_reduced_loaded LABELS cli)
+tvf_cli_test(simulate.reduced_load_other_options failure
+             ARGS simulate ${CLI_OUT}/box.mesh --reduced --samples 4 --load ${CLI_OUT}/box.pdr
+             STDERR "made with other reduction options: number_of_samples 5 in the file, 4 given"
+             REQUIRES simulate_reduced_saved)
+tvf_cli_test(simulate.save_needs_reduced usage ARGS simulate ${CLI_OUT}/box.mesh --save ${CLI_OUT}/full.pdr
+             STDERR "give '--reduced'")

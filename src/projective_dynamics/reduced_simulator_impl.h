@@ -1,0 +1,403 @@
+// Copyright (c) 2026 The Projective_dynamics authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The state of a Reduced_simulator, shared by its simulation (reduced_simulator.cpp) and its
+// precomputation file (reduced_simulator_file.cpp).
+
+#ifndef CGAL_PROJECTIVE_DYNAMICS_SRC_REDUCED_SIMULATOR_IMPL_H
+#define CGAL_PROJECTIVE_DYNAMICS_SRC_REDUCED_SIMULATOR_IMPL_H
+
+#include <CGAL/Projective_dynamics/Position_subspace.h>
+#include <CGAL/Projective_dynamics/Projection_subspace.h>
+#include <CGAL/Projective_dynamics/Reduced_simulator.h>
+
+#include "element_graph.h"
+#include "hyper_reduction.h"
+#include "scene_handles.h"
+#include "thread_pool.h"
+
+#include <CGAL/Model_reduction/internal/binary_file.h>
+#include <CGAL/Model_reduction/internal/mesh_identity.h>
+
+#include <Eigen/Cholesky>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <string>
+#include <thread>
+
+namespace CGAL {
+namespace Projective_dynamics {
+
+namespace internal {
+
+typedef Eigen::SparseMatrix<double, Eigen::RowMajor> Sparse;
+typedef Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> Rows;
+typedef std::chrono::steady_clock Clock;
+inline double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+
+inline void check_reduction(const Reduction_options& r, int n)
+{
+  if(r.samples < 1 || r.samples > n)
+    throw Invalid_input("the number of position samples must be in [1, " + std::to_string(n) + "] (the number of vertices), not " +
+                        std::to_string(r.samples));
+  if(!(r.pin_stiffness > 0) || !std::isfinite(r.pin_stiffness))
+    throw Invalid_input("the pin stiffness must be positive and finite, not " + std::to_string(r.pin_stiffness));
+  if(!r.hyper_reduction) return;
+  if(r.projection_columns < 1) throw Invalid_input("the number of projection columns l must be at least 1");
+  if(r.sampled_elements < r.projection_columns + 20)
+    throw Invalid_input("s = " + std::to_string(r.sampled_elements) + " sampled elements is fewer than l + 20 = " +
+                        std::to_string(r.projection_columns + 20) +
+                        " (the fit of l columns needs clearly more sampled elements than unknowns)");
+  if(r.constraint_samples < 1 || r.constraint_samples > n)
+    throw Invalid_input("the number of constraint samples must be in [1, " + std::to_string(n) + "], not " +
+                        std::to_string(r.constraint_samples));
+  if(4 * r.constraint_samples < r.projection_columns)
+    throw Invalid_input("l = " + std::to_string(r.projection_columns) + " exceeds the 4 candidate columns per constraint sample (" +
+                        std::to_string(4 * r.constraint_samples) + ")");
+}
+
+} // namespace internal
+
+using internal::check_options;
+using internal::check_reduction;
+using internal::Clock;
+using internal::Floor;
+using internal::Rows;
+using internal::seconds_since;
+using internal::Sparse;
+
+struct Reduced_simulator::Impl : internal::Scene_handles
+{
+  Elastic_model model;
+  Simulator_options o;
+  Reduction_options r;
+  internal::Thread_pool pool;
+  Sparse U, Ut;
+  std::vector<int> samples;
+  Eigen::MatrixXd Mr;
+  Eigen::LLT<Eigen::MatrixXd> Mr_llt;
+  Eigen::VectorXd gvec; // U^T m
+  std::vector<internal::Reduced_group> groups;
+  // Hyper-reduction: the sampled elements' rows on the used vertices.
+  std::vector<int> used, sampled_all, sampled_row;
+  Sparse U_used, S_used;
+  // State.
+  Eigen::MatrixXd a, a_dot, ext;
+  bool has_ext = false;
+  std::vector<int> collision;
+  bool dirty = true;
+  double kappa = 0;
+  Eigen::LLT<Eigen::MatrixXd> K;
+  Sparse STW;
+  Reduced_step_timings timings;
+  int factorizations = 0;
+
+  Impl(Elastic_model m, const Simulator_options& options, const Reduction_options& reduction)
+    : Scene_handles(m.number_of_vertices()), model(std::move(m)), o(options), r(reduction),
+      pool(internal::thread_count(options.threads))
+  {}
+
+  int n() const { return model.number_of_vertices(); }
+  int k() const { return int(U.cols()); }
+
+  void check_vertex(int v, const char* what) const { internal::check_vertex(v, n(), what); }
+  void check_rows(const Positions& x, const char* what) const { internal::check_rows(x, n(), what); }
+
+  // Tells the progress callback; throws Cancelled if it says stop.
+  void report(const char* stage, double fraction) const
+  {
+    if(!r.progress) return;
+    Reduced_precomputation_progress p;
+    p.stage = stage;
+    p.fraction = fraction;
+    if(!r.progress(p))
+      throw Cancelled(std::string("the reduced simulator's precomputation was cancelled (at \"") + stage + "\")");
+  }
+
+  // The mass matrix U^T M U and the start state (cheap: also done by a loaded simulator).
+  void prepare_masses(const Eigen::MatrixXd* rest_coordinates)
+  {
+    Ut = U.transpose();
+    const Eigen::VectorXd& m = model.masses();
+    Mr = Eigen::MatrixXd(Ut * m.asDiagonal() * U);
+    Mr_llt.compute(Mr);
+    if(Mr_llt.info() != Eigen::Success)
+      throw Numerical_failure("U^T M U is not positive definite: the basis has dependent columns on the massive vertices "
+                              "(a sample's support too small or flat: fewer samples or a larger radius multiplier)");
+    gvec = Ut * m;
+    a = rest_coordinates ? *rest_coordinates : Eigen::MatrixXd(Mr_llt.solve(Ut * m.asDiagonal() * model.rest_positions()));
+    if(!rest_coordinates)
+    {
+      const double residual = (Positions(U * a) - model.rest_positions()).norm();
+      if(!(residual <= 1e-9 * std::max(1.0, model.rest_positions().norm())))
+        throw Invalid_input("the basis does not reproduce the rest positions (relative residual " + std::to_string(residual) + ")");
+    }
+    a_dot = Eigen::MatrixXd::Zero(k(), 3);
+    ext = Eigen::MatrixXd::Zero(k(), 3);
+  }
+
+  // The groups' rows and measures (cheap); returns each group's elements.
+  // Groups: contiguous rows (elements are added group by group).
+  std::vector<std::vector<int>> group_layout()
+  {
+    const auto& elements = model.elements();
+    groups.clear();
+    groups.resize(std::size_t(model.number_of_groups()));
+    std::vector<std::vector<int>> members(groups.size());
+    for(int e = 0; e < model.number_of_elements(); ++e) members[std::size_t(elements[std::size_t(e)].group)].push_back(e);
+    for(std::size_t g = 0; g < groups.size(); ++g)
+    {
+      internal::Reduced_group& G = groups[g];
+      if(members[g].empty()) continue;
+      G.first_row = elements[std::size_t(members[g].front())].first_row;
+      std::vector<double> measure;
+      for(int e : members[g])
+        for(int q = 0; q < elements[std::size_t(e)].rows; ++q) measure.push_back(elements[std::size_t(e)].measure);
+      G.rows = int(measure.size());
+      G.measure = Eigen::Map<Eigen::VectorXd>(measure.data(), G.rows);
+    }
+    return members;
+  }
+
+  void default_collision()
+  {
+    if(!collision.empty()) return;
+    if(samples.empty())
+      for(int i = 0; i < n(); ++i) collision.push_back(i);
+    else
+    {
+      collision = samples;
+      collision.insert(collision.end(), used.begin(), used.end());
+      std::sort(collision.begin(), collision.end());
+      collision.erase(std::unique(collision.begin(), collision.end()), collision.end());
+    }
+  }
+
+  // Progress: the position subspace up to 0.25 (reported by the constructor), the projected
+  // matrices up to 0.4 (all of the rest when not hyper-reduced), the sampled elements and the
+  // projection subspaces up to 1.
+  void precompute(const Eigen::MatrixXd* rest_coordinates)
+  {
+    const auto start = Clock::now();
+    prepare_masses(rest_coordinates);
+    const double end_of_matrices = r.hyper_reduction ? 0.4 : 1.0;
+    const std::vector<std::vector<int>> members = group_layout();
+    const Sparse& S = model.selection_matrix();
+    for(std::size_t g = 0; g < groups.size(); ++g)
+    {
+      report("projected matrices", 0.25 + (end_of_matrices - 0.25) * double(g) / double(groups.size()));
+      internal::Reduced_group& G = groups[g];
+      if(members[g].empty()) continue;
+      const Sparse Sg = S.middleRows(G.first_row, G.rows);
+      const Sparse A = Sparse(Sg.transpose()) * G.measure.asDiagonal() * Sg;
+      const Sparse AU = A * U;
+      G.L = Eigen::MatrixXd(Ut * AU);
+    }
+    if(r.hyper_reduction)
+    {
+      // The element samples (farthest points) take about a quarter of the rest.
+      internal::Hyper_sampling h = internal::sample_and_fit(model, r, U, Ut, members, groups, [&](const char* stage, double f) {
+        report(stage, std::string(stage) == "sampled elements" ? 0.4 : 0.55 + 0.45 * f);
+      });
+      used = std::move(h.used), sampled_all = std::move(h.sampled_all), sampled_row = std::move(h.sampled_row);
+      S_used = std::move(h.S_used), U_used = std::move(h.U_used);
+    }
+    default_collision();
+    timings.precomputation = seconds_since(start);
+  }
+
+  void factor()
+  {
+    const auto start = Clock::now();
+    const double h = o.time_step;
+    Eigen::MatrixXd A = Mr / (h * h);
+    for(std::size_t g = 0; g < groups.size(); ++g)
+      if(groups[g].L.size()) A += model.stiffness(int(g)) * groups[g].L;
+    kappa = r.pin_stiffness * model.masses().mean() / (h * h);
+    auto add_held = [&](const std::vector<int>& held) {
+      for(int i : held)
+      {
+        const Eigen::RowVectorXd u = U.row(i);
+        A += kappa * u.transpose() * u;
+      }
+    };
+    add_held(pinned);
+    add_held(grabbed);
+    K.compute(A);
+    if(K.info() != Eigen::Success) throw Numerical_failure("the reduced global matrix K is not positive definite");
+    if(!r.hyper_reduction) STW = Sparse(model.selection_matrix().transpose()) * model.row_weights().asDiagonal();
+    ++factorizations;
+    dirty = false;
+    timings.factorization = seconds_since(start);
+  }
+
+  // Projections of the sampled elements and the fit's right-hand side (J V)^T p_S, in chunks on
+  // the thread pool (each chunk its own partial sum, added in a fixed order: same bits for any
+  // thread count).
+  void local_hyper(const Eigen::MatrixXd& x, Eigen::MatrixXd& rhs)
+  {
+    const Rows xu = U_used * x;
+    const auto& elements = model.elements();
+    constexpr int chunks = 8;
+    for(std::size_t g = 0; g < groups.size(); ++g)
+    {
+      const internal::Reduced_group& G = groups[g];
+      const double stiffness = model.stiffness(int(g));
+      if(G.sampled.empty() || stiffness == 0) continue;
+      const int count = int(G.sampled.size()), l = int(G.JV.cols());
+      std::array<Eigen::Matrix<double, Eigen::Dynamic, 3>, chunks> partial;
+      pool.run(chunks, [&](std::size_t begin, std::size_t end) {
+        double value[9];
+        Rows p;
+        for(std::size_t c = begin; c < end; ++c)
+        {
+          const int q0 = G.first_sampled + int(c) * count / chunks, q1 = G.first_sampled + int(c + 1) * count / chunks;
+          const int row0 = q0 < int(sampled_row.size()) ? sampled_row[std::size_t(q0)] : int(S_used.rows());
+          const int row1 = q1 < int(sampled_row.size()) ? sampled_row[std::size_t(q1)] : int(S_used.rows());
+          p.resize(row1 - row0, 3);
+          for(int q = q0; q < q1; ++q)
+          {
+            const int e = sampled_all[std::size_t(q)];
+            const int row = sampled_row[std::size_t(q)];
+            for(int j = 0; j < elements[std::size_t(e)].rows; ++j)
+            {
+              double* out = value + 3 * j;
+              out[0] = out[1] = out[2] = 0;
+              for(Sparse::InnerIterator it(S_used, row + j); it; ++it)
+              {
+                const double* xk = xu.data() + 3 * it.col();
+                out[0] += it.value() * xk[0], out[1] += it.value() * xk[1], out[2] += it.value() * xk[2];
+              }
+            }
+            model.project(e, value, p.data() + 3 * (row - row0));
+          }
+          partial[c].noalias() = G.JV.middleRows(row0 - G.first_sampled_row, row1 - row0).transpose() * p;
+        }
+      });
+      Eigen::Matrix<double, Eigen::Dynamic, 3> sum = Eigen::Matrix<double, Eigen::Dynamic, 3>::Zero(l, 3);
+      for(const auto& part : partial) sum += part;
+      rhs.noalias() += stiffness * (G.F * G.fit.solve(sum));
+    }
+  }
+
+  void local_full(const Eigen::MatrixXd& x, Eigen::MatrixXd& rhs)
+  {
+    const Rows q = U * x;
+    const Sparse& S = model.selection_matrix();
+    const auto& elements = model.elements();
+    Rows p(model.number_of_rows(), 3);
+    pool.run(elements.size(), [&](std::size_t begin, std::size_t end) {
+      double value[9];
+      for(std::size_t e = begin; e < end; ++e)
+      {
+        const Element& el = elements[e];
+        for(int j = 0; j < el.rows; ++j)
+        {
+          double* out = value + 3 * j;
+          out[0] = out[1] = out[2] = 0;
+          for(Sparse::InnerIterator it(S, el.first_row + j); it; ++it)
+          {
+            const double* xk = q.data() + 3 * it.col();
+            out[0] += it.value() * xk[0], out[1] += it.value() * xk[1], out[2] += it.value() * xk[2];
+          }
+        }
+        model.project(int(e), value, p.data() + 3 * el.first_row);
+      }
+    });
+    const Rows force = STW * p;
+    rhs.noalias() += Ut * force;
+  }
+
+  // Pushes the penetrating collision vertices onto each floor by the smallest change of x in
+  // the norm of U^T M U along the normal, holding the pinned and grabbed vertices' heights; up to
+  // ten rounds, as fixing some may push others below.
+  void resolve_floors(Eigen::MatrixXd& x) const
+  {
+    for(int round = 0; round < 10; ++round)
+    {
+      bool moved = false;
+      for(const Floor& f : floors)
+      {
+        std::vector<int> c;
+        std::vector<double> depth;
+        const Rows pos = [&] {
+          Rows out(Eigen::Index(collision.size()), 3);
+          for(std::size_t q = 0; q < collision.size(); ++q) out.row(Eigen::Index(q)) = U.row(collision[q]) * x;
+          return out;
+        }();
+        for(std::size_t q = 0; q < collision.size(); ++q)
+        {
+          const double d = (pos.row(Eigen::Index(q)).transpose() - f.point).dot(f.normal);
+          if(d < 0) c.push_back(collision[q]), depth.push_back(-d);
+        }
+        if(c.empty()) continue;
+        moved = true;
+        // Pinned and grabbed vertices keep their height over the floor (a push must not undo a grab).
+        for(const std::vector<int>* held : {&pinned, &grabbed})
+          for(int i : *held)
+            if(std::find(c.begin(), c.end(), i) == c.end()) c.push_back(i), depth.push_back(0);
+        Eigen::MatrixXd Uc(Eigen::Index(c.size()), k());
+        for(std::size_t q = 0; q < c.size(); ++q) Uc.row(Eigen::Index(q)) = U.row(c[q]);
+        const Eigen::MatrixXd Y = Mr_llt.solve(Uc.transpose());
+        Eigen::MatrixXd G = Uc * Y;
+        // A relative 1e-10 on the diagonal: more penetrating vertices than the subspace can
+        // move independently make G singular; then the least-squares push.
+        G.diagonal().array() += 1e-10 * G.diagonal().mean();
+        const Eigen::VectorXd lambda = G.ldlt().solve(Eigen::Map<const Eigen::VectorXd>(depth.data(), Eigen::Index(depth.size())));
+        x += (Y * lambda) * f.normal.transpose();
+      }
+      if(!moved) break;
+    }
+  }
+
+  void step(const std::function<void(int, const Eigen::MatrixXd&)>& after_iteration)
+  {
+    if(dirty) factor();
+    const auto start = Clock::now();
+    const double h = o.time_step;
+    const Eigen::MatrixXd predicted = a + h * a_dot;
+    Eigen::MatrixXd base = Mr * predicted / (h * h) + gvec * o.gravity.transpose();
+    if(has_ext) base += ext;
+    for(std::size_t q = 0; q < pinned.size(); ++q)
+      base += kappa * Eigen::MatrixXd(U.row(pinned[q]).transpose()) * pin_targets.row(Eigen::Index(q));
+    for(std::size_t q = 0; q < grabbed.size(); ++q)
+      base += kappa * Eigen::MatrixXd(U.row(grabbed[q]).transpose()) * grab_targets.row(Eigen::Index(q));
+    Eigen::MatrixXd x = predicted;
+    double local_time = 0, global_time = 0;
+    for(int iteration = 0; iteration < o.iterations; ++iteration)
+    {
+      const auto t0 = Clock::now();
+      Eigen::MatrixXd rhs = base;
+      if(r.hyper_reduction) local_hyper(x, rhs);
+      else local_full(x, rhs);
+      const auto t1 = Clock::now();
+      local_time += std::chrono::duration<double>(t1 - t0).count();
+      x = K.solve(rhs);
+      global_time += seconds_since(t1);
+      if(after_iteration) after_iteration(iteration, x);
+    }
+    const auto t2 = Clock::now();
+    resolve_floors(x);
+    timings.contact = seconds_since(t2);
+    if(!x.allFinite())
+      throw Numerical_failure("the coordinates stopped being finite (an absurd force or mass?); the state before the step is kept");
+    a_dot = (x - a) / h;
+    a = x;
+    timings.local = local_time;
+    timings.global = global_time;
+    timings.total = seconds_since(start);
+  }
+};
+
+} // namespace Projective_dynamics
+} // namespace CGAL
+
+#endif
