@@ -13,6 +13,7 @@
 #include <CGAL/Projective_dynamics/Simulator.h>
 #include <CGAL/Projective_dynamics/make_models.h>
 #include <CGAL/Projective_dynamics/medit_io.h>
+#include <CGAL/Projective_dynamics/tetrahedralize.h>
 
 #include <algorithm>
 #include <cmath>
@@ -30,10 +31,18 @@ namespace {
 
 struct Body
 {
+  Body(PD::Elastic_model m, std::vector<PD::Triangle> s, bool is_solid, int element_count)
+    : model(std::move(m)), surface(std::move(s)), solid(is_solid), elements(element_count)
+  {}
   PD::Elastic_model model;
   std::vector<PD::Triangle> surface; // what the frames show
-  bool solid = false;
-  int elements = 0;
+  bool solid;
+  int elements;
+  // A surface mesh filled with tetrahedra: its vertices in them (the frames show the surface).
+  bool embedded = false;
+  PD::Surface_embedding embedding;
+  // The frames' vertices for the simulator's positions.
+  PD::Positions drawn(const PD::Positions& q) const { return embedded ? embedding.embed(q) : q; }
 };
 
 Body read_body(const std::string& path, const Command_line& command)
@@ -46,10 +55,9 @@ Body read_body(const std::string& path, const Command_line& command)
     {
       const PD::Tet_mesh tets = PD::read_medit(path);
       PD::check_tet_mesh(tets);
-      Body body{PD::make_solid_model(tets, PD::parameters::strain_stiffness(stiffness).density(density)),
-                tets.triangles.empty() ? PD::boundary_triangles(tets.points, tets.tetrahedra) : tets.triangles, true,
-                int(tets.tetrahedra.size())};
-      return body;
+      return Body(PD::make_solid_model(tets, PD::parameters::strain_stiffness(stiffness).density(density)),
+                  tets.triangles.empty() ? PD::boundary_triangles(tets.points, tets.tetrahedra) : tets.triangles, true,
+                  int(tets.tetrahedra.size()));
     }
     const Tool_mesh mesh(path, command.mollify());
     const auto& m = mesh.intrinsic();
@@ -57,10 +65,33 @@ Body read_body(const std::string& path, const Command_line& command)
     for(int v = 0; v < m.number_of_vertices(); ++v) points[std::size_t(v)] = m.position(v);
     std::vector<PD::Triangle> triangles(std::size_t(m.number_of_faces()));
     for(int f = 0; f < m.number_of_faces(); ++f) triangles[std::size_t(f)] = m.face_vertices(f);
-    return Body{PD::make_shell_model(points, triangles,
+    if(command.has("solid"))
+    {
+      PD::Tetrahedralization_options o;
+      o.cell_size = command.get<double>("cell-size");
+      o.facet_distance = command.get<double>("facet-distance");
+      o.feature_angle = command.get<double>("feature-angle");
+      Step meshing("tetrahedra (Mesh_3)");
+      PD::Tetrahedralized_surface t = PD::tetrahedralize(points, triangles, o);
+      meshing.done();
+      say("tetrahedra: %zu vertices, %zu tetrahedra (Mesh_3, %.3f s); the surface's vertices embedded, at most %.3g of "
+          "the diagonal outside them\n",
+          t.mesh.points.size(), t.mesh.tetrahedra.size(), meshing.seconds(), t.largest_outside_distance);
+      if(command.has("tetrahedra"))
+      {
+        PD::write_medit(command.get<std::string>("tetrahedra"), t.mesh);
+        say("wrote %s\n", command.get<std::string>("tetrahedra").c_str());
+      }
+      Body body(PD::make_solid_model(t.mesh, PD::parameters::strain_stiffness(stiffness).density(density)), triangles,
+                true, int(t.mesh.tetrahedra.size()));
+      body.embedded = true;
+      body.embedding = std::move(t.surface);
+      return body;
+    }
+    return Body(PD::make_shell_model(points, triangles,
                                      PD::parameters::strain_stiffness(stiffness).density(density).bending_stiffness(
                                          command.get<double>("bending"))),
-                triangles, false, int(triangles.size())};
+                triangles, false, int(triangles.size()));
   }
   catch(const MR::Invalid_input& e)
   {
@@ -182,12 +213,13 @@ double percentile(std::vector<double> v, double p)
 
 // Runs the scene on either simulator (their scene interfaces agree) and reports what moved.
 template <class Simulator>
-void run_scene(Simulator& sim, const Scene& scene, const PD::Positions& rest, int frames, Frame_writer& writer)
+void run_scene(Simulator& sim, const Scene& scene, const PD::Positions& rest, const Body& body, int frames,
+               Frame_writer& writer)
 {
   if(scene.name == "drop") sim.add_floor(Eigen::Vector3d(0, 0, scene.floor_height), Eigen::Vector3d(0, 0, 1));
   if(!scene.pinned.empty()) sim.set_pinned_vertices(scene.pinned);
   if(!scene.grabbed.empty()) sim.grab(scene.grabbed, scene.grab_start);
-  writer.write(0, sim.positions());
+  writer.write(0, body.drawn(sim.positions()));
   std::vector<double> step_ms;
   double local = 0, global = 0, lowest = rest.col(2).minCoeff();
   for(int f = 1; f <= frames; ++f)
@@ -205,7 +237,7 @@ void run_scene(Simulator& sim, const Scene& scene, const PD::Positions& rest, in
     global += t.global;
     const PD::Positions q = sim.positions();
     lowest = std::min(lowest, q.col(2).minCoeff());
-    writer.write(f, q);
+    writer.write(f, body.drawn(q));
   }
   double sum = 0;
   for(double ms : step_ms) sum += ms;
@@ -260,6 +292,16 @@ int simulate_command(const Arguments& args)
     ("time-step", po::value<double>()->value_name("H")->default_value(1.0 / 30), "seconds per step")
     ("iterations", po::value<int>()->value_name("K")->default_value(10), "local/global iterations per step")
     ("threads", po::value<int>()->value_name("T")->default_value(0), "threads of the local steps (0: all cores)");
+  command.group("solid from a surface").add_options()
+    ("solid", "fill a closed surface mesh with tetrahedra (CGAL Mesh_3) and simulate the solid; the frames show "
+              "the surface")
+    ("cell-size", po::value<double>()->value_name("C")->default_value(0.05),
+     "largest tetrahedron circumradius, relative to the bounding box diagonal")
+    ("facet-distance", po::value<double>()->value_name("D")->default_value(0.002),
+     "largest distance of the tetrahedra's boundary from the surface, relative to the diagonal")
+    ("feature-angle", po::value<double>()->value_name("A")->default_value(60.0),
+     "edges whose faces' normals differ by more than A degrees stay sharp (0: none)")
+    ("tetrahedra", po::value<std::string>()->value_name("FILE.mesh"), "write the tetrahedra (Medit)");
   command.group("material").add_options()
     ("stiffness", po::value<double>()->value_name("K")->default_value(1e7), "strain stiffness (per volume or area)")
     ("density", po::value<double>()->value_name("RHO")->default_value(1e3), "mass per volume (solids) or area (shells)")
@@ -335,7 +377,7 @@ int simulate_command(const Arguments& args)
         sim.save(command.get<std::string>("save"));
         say("saved the precomputation to %s\n", command.get<std::string>("save").c_str());
       }
-      run_scene(sim, scene, rest, frames, writer);
+      run_scene(sim, scene, rest, body, frames, writer); // body: its embedding only (the model moved)
     }
     else
     {
@@ -343,7 +385,7 @@ int simulate_command(const Arguments& args)
       PD::Simulator sim(std::move(body.model), options);
       factor.done();
       say("full PD: %ld unknowns, set-up %.3f s\n", long(rest.rows()), factor.seconds());
-      run_scene(sim, scene, rest, frames, writer);
+      run_scene(sim, scene, rest, body, frames, writer); // body: its embedding only (the model moved)
     }
   }
   catch(const MR::Invalid_input& e)

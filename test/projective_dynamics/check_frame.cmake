@@ -1,6 +1,6 @@
 # Checks one OBJ frame written by `tvf simulate`, read here independently of the simulator:
-#   cmake -DFILE=frame.obj [-DMIN_Z_AT_LEAST=a] [-DMIN_Z_AT_MOST=b] [-DVERTICES=i:x:y:z;...]
-#         -P check_frame.cmake
+#   cmake -DFILE=frame.obj [-DVERTEX_COUNT=n] [-DMIN_Z_AT_LEAST=a] [-DMIN_Z_AT_MOST=b]
+#         [-DVERTICES=i:x:y:z;...] -P check_frame.cmake
 # MIN_Z_*: bounds on the lowest z of the frame; VERTICES: 1-based vertex i must be exactly at
 # (x, y, z) (hard pins keep their rest positions to the last bit).
 if(NOT EXISTS "${FILE}")
@@ -10,6 +10,9 @@ file(STRINGS "${FILE}" lines REGEX "^v ")
 list(LENGTH lines count)
 if(count EQUAL 0)
   message(FATAL_ERROR "'${FILE}' has no vertex")
+endif()
+if(DEFINED VERTEX_COUNT AND NOT count EQUAL VERTEX_COUNT)
+  message(FATAL_ERROR "'${FILE}' has ${count} vertices, expected ${VERTEX_COUNT}")
 endif()
 set(lowest "")
 foreach(line IN LISTS lines)

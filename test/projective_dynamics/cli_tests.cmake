@@ -98,3 +98,18 @@ tvf_cli_test(simulate.reduced_load_other_options failure
              REQUIRES simulate_reduced_saved)
 tvf_cli_test(simulate.save_needs_reduced usage ARGS simulate ${CLI_OUT}/box.mesh --save ${CLI_OUT}/full.pdr
              STDERR "give '--reduced'")
+
+# A closed surface filled with tetrahedra (Mesh_3): the frames show the surface's own 162
+# vertices, and the solid falls onto the floor (at z = -0.7447, a quarter of the height below the
+# sphere): its lowest vertex rests there; an open surface is refused with the reason.
+tvf_cli_test(simulate.solid_from_surface success
+             ARGS simulate ${SPHERE} --solid --cell-size 0.15 --frames 40 -o ${CLI_OUT}/sphere_solid
+                  --tetrahedra ${CLI_OUT}/sphere_solid.mesh
+             OUTPUTS ${CLI_OUT}/sphere_solid/frame_0040.obj ${CLI_OUT}/sphere_solid.mesh
+             STDOUT "tetrahedra: [0-9]+ vertices, [0-9]+ tetrahedra \\(Mesh_3.*a solid"
+             SETUP simulate_sphere_solid)
+pd_frame_check(solid_from_surface simulate_sphere_solid ${CLI_OUT}/sphere_solid/frame_0040.obj -DVERTEX_COUNT=162
+               -DMIN_Z_AT_LEAST=-0.76 -DMIN_Z_AT_MOST=-0.7)
+file(WRITE ${CLI_OUT}/one_triangle.off "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")
+tvf_cli_test(simulate.solid_from_open_surface failure ARGS simulate ${CLI_OUT}/one_triangle.off --solid
+             STDERR "one_triangle.off': tetrahedralize: the surface is open \\(3 border edges\\)")

@@ -33,3 +33,9 @@ MR_add_named_parameter(constraint_radius_multiplier_t, constraint_radius_multipl
 MR_add_named_parameter(number_of_projection_columns_t, number_of_projection_columns, number_of_projection_columns)
 MR_add_named_parameter(number_of_sampled_elements_t, number_of_sampled_elements, number_of_sampled_elements)
 MR_add_named_parameter(pin_stiffness_t, pin_stiffness, pin_stiffness)
+
+// Tetrahedra from a closed surface (tetrahedralize.h): sizes relative to the bounding box
+// diagonal, and the dihedral angle that keeps an edge sharp
+MR_add_named_parameter(cell_size_t, cell_size, cell_size)
+MR_add_named_parameter(facet_distance_t, facet_distance, facet_distance)
+MR_add_named_parameter(feature_angle_t, feature_angle, feature_angle)
