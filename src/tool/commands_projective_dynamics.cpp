@@ -20,6 +20,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <type_traits>
 #include <vector>
 
 namespace tvf_tool {
@@ -221,7 +222,7 @@ void run_scene(Simulator& sim, const Scene& scene, const PD::Positions& rest, co
   if(!scene.grabbed.empty()) sim.grab(scene.grabbed, scene.grab_start);
   writer.write(0, body.drawn(sim.positions()));
   std::vector<double> step_ms;
-  double local = 0, global = 0, lowest = rest.col(2).minCoeff();
+  double local = 0, global = 0, contact = 0, lowest = rest.col(2).minCoeff();
   for(int f = 1; f <= frames; ++f)
   {
     if(!scene.grabbed.empty())
@@ -235,14 +236,15 @@ void run_scene(Simulator& sim, const Scene& scene, const PD::Positions& rest, co
     step_ms.push_back(1e3 * t.total);
     local += t.local;
     global += t.global;
+    if constexpr(std::is_same_v<Simulator, PD::Reduced_simulator>) contact += t.contact;
     const PD::Positions q = sim.positions();
     lowest = std::min(lowest, q.col(2).minCoeff());
     writer.write(f, body.drawn(q));
   }
   double sum = 0;
   for(double ms : step_ms) sum += ms;
-  say("%d frames: step %.3f ms mean, %.3f ms p90 (local %.3f, global %.3f ms mean)\n", frames, sum / frames,
-      percentile(step_ms, 0.9), 1e3 * local / frames, 1e3 * global / frames);
+  say("%d frames: step %.3f ms mean, %.3f ms p90 (local %.3f, global %.3f, contact %.3f ms mean)\n", frames,
+      sum / frames, percentile(step_ms, 0.9), 1e3 * local / frames, 1e3 * global / frames, 1e3 * contact / frames);
   const PD::Positions q = sim.positions();
   if(scene.name == "drop")
     say("floor at z = %.6g; lowest vertex: %.6g at the end, %.6g over the run\n", scene.floor_height,
