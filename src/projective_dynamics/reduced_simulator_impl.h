@@ -84,6 +84,10 @@ struct Reduced_simulator::Impl : internal::Scene_handles
   std::vector<int> samples;
   Eigen::MatrixXd Mr;
   Eigen::LLT<Eigen::MatrixXd> Mr_llt;
+  // (U^T M U)^-1, for the floor's pushes: times the sparse rows of U it costs O(k nnz) per push
+  // instead of the O(k^2 c) of solving with c dense rows (armadillo drop, 22.8k tets, k = 600:
+  // the contact was 89 of 106 ms per step).
+  Eigen::MatrixXd Mr_inverse;
   Eigen::VectorXd gvec; // U^T m
   std::vector<internal::Reduced_group> groups;
   // Hyper-reduction: the sampled elements' rows on the used vertices.
@@ -132,6 +136,7 @@ struct Reduced_simulator::Impl : internal::Scene_handles
     if(Mr_llt.info() != Eigen::Success)
       throw Numerical_failure("U^T M U is not positive definite: the basis has dependent columns on the massive vertices "
                               "(a sample's support too small or flat: fewer samples or a larger radius multiplier)");
+    Mr_inverse = Mr_llt.solve(Eigen::MatrixXd::Identity(k(), k()));
     gvec = Ut * m;
     a = rest_coordinates ? *rest_coordinates : Eigen::MatrixXd(Mr_llt.solve(Ut * m.asDiagonal() * model.rest_positions()));
     if(!rest_coordinates)
@@ -344,9 +349,14 @@ struct Reduced_simulator::Impl : internal::Scene_handles
         for(const std::vector<int>* held : {&pinned, &grabbed})
           for(int i : *held)
             if(std::find(c.begin(), c.end(), i) == c.end()) c.push_back(i), depth.push_back(0);
-        Eigen::MatrixXd Uc(Eigen::Index(c.size()), k());
-        for(std::size_t q = 0; q < c.size(); ++q) Uc.row(Eigen::Index(q)) = U.row(c[q]);
-        const Eigen::MatrixXd Y = Mr_llt.solve(Uc.transpose());
+        Sparse Uc(Eigen::Index(c.size()), k());
+        {
+          std::vector<Eigen::Triplet<double>> entries;
+          for(std::size_t q = 0; q < c.size(); ++q)
+            for(Sparse::InnerIterator it(U, c[q]); it; ++it) entries.emplace_back(int(q), int(it.col()), it.value());
+          Uc.setFromTriplets(entries.begin(), entries.end());
+        }
+        const Eigen::MatrixXd Y = Mr_inverse * Eigen::SparseMatrix<double>(Uc.transpose());
         Eigen::MatrixXd G = Uc * Y;
         // A relative 1e-10 on the diagonal: more penetrating vertices than the subspace can
         // move independently make G singular; then the least-squares push.
