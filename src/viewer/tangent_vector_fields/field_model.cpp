@@ -10,6 +10,8 @@
 #include <CGAL/Tangent_vector_fields/Hodge_solver.h>
 #include <CGAL/Tangent_vector_fields/N_field_basis.h>
 #include <CGAL/Tangent_vector_fields/N_field_operators.h>
+#include <CGAL/Tangent_vector_fields/Reduced_face_vectors.h>
+#include <CGAL/Tangent_vector_fields/Streamline_tracer.h>
 
 #include <thread>
 
@@ -198,6 +200,32 @@ const Outgoing& Field_model::mesh_message() const
                               {"boundary_edges", false, boundary.data(), boundary.size()}}));
   });
   return *mesh_message_;
+}
+
+std::shared_ptr<const TVF::Streamline_surface> Field_model::streamline_surface() const
+{
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if(surface_) return surface_;
+  }
+  auto surface = std::make_shared<const TVF::Streamline_surface>(matrices_->shared_mesh());
+  std::lock_guard<std::mutex> lock(mutex_);
+  if(!surface_) surface_ = std::move(surface);
+  return surface_;
+}
+
+std::shared_ptr<const TVF::Eigenfield_rows> Field_model::eigenfield_rows(int d) const
+{
+  const std::shared_ptr<const TVF::Eigenfield_basis> b = basis();
+  if(!b) return nullptr;
+  std::lock_guard<std::mutex> lock(rows_mutex_); // one copy per size, even if two sessions ask at once
+  std::shared_ptr<const TVF::Eigenfield_rows> rows = rows_[d].lock();
+  if(!rows)
+  {
+    rows = std::make_shared<const TVF::Eigenfield_rows>(b, d);
+    rows_[d] = rows;
+  }
+  return rows;
 }
 
 } // namespace tvf_viewer
