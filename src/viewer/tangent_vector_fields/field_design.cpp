@@ -250,8 +250,15 @@ public:
       if(!preview_source_ || preview_size_ != d)
       {
         preview_source_.reset(); // its rows may go before the new ones are made
-        preview_source_ = kind_.face_vectors(d);
         preview_size_ = d;
+        try
+        {
+          preview_source_ = kind_.face_vectors(d); // null while they are being made
+        }
+        catch(const std::exception&) // no memory for the rows: no preview, the field as before
+        {
+          return false;
+        }
       }
       if(!preview_source_) return false;
       Clock::time_point start = Clock::now();

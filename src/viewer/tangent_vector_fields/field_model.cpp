@@ -15,7 +15,9 @@
 
 #include <thread>
 
+#include <algorithm>
 #include <cstdint>
+#include <future>
 #include <vector>
 
 namespace tvf_viewer {
@@ -218,13 +220,26 @@ std::shared_ptr<const TVF::Eigenfield_rows> Field_model::eigenfield_rows(int d) 
 {
   const std::shared_ptr<const TVF::Eigenfield_basis> b = basis();
   if(!b) return nullptr;
-  std::lock_guard<std::mutex> lock(rows_mutex_); // one copy per size, even if two sessions ask at once
-  std::shared_ptr<const TVF::Eigenfield_rows> rows = rows_[d].lock();
-  if(!rows)
+  std::lock_guard<std::mutex> lock(rows_mutex_);
+  Rows_slot& slot = rows_[d];
+  if(std::shared_ptr<const TVF::Eigenfield_rows> rows = slot.rows.lock()) return rows;
+  auto make = [b, d] { return std::make_shared<const TVF::Eigenfield_rows>(b, d); };
+  const double bytes = 8.0 * matrices_->mesh().number_of_faces() * std::max(d, 0); // 2 nf d float32
+  if(!slot.job.valid())
   {
-    rows = std::make_shared<const TVF::Eigenfield_rows>(b, d);
-    rows_[d] = rows;
+    if(bytes < 64e6)
+    {
+      std::shared_ptr<const TVF::Eigenfield_rows> rows = make();
+      slot.rows = rows;
+      return rows;
+    }
+    slot.job = std::async(std::launch::async, make).share();
   }
+  if(slot.job.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return nullptr;
+  const std::shared_future<std::shared_ptr<const TVF::Eigenfield_rows>> job = slot.job;
+  slot.job = {};
+  std::shared_ptr<const TVF::Eigenfield_rows> rows = job.get(); // rethrows what the job threw
+  slot.rows = rows;
   return rows;
 }
 

@@ -19,6 +19,7 @@
 #include <condition_variable>
 #include <cstddef>
 #include <functional>
+#include <future>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -100,9 +101,10 @@ public:
   /// What streamline tracers of the mesh share (made once, on first use).
   std::shared_ptr<const TVF::Streamline_surface> streamline_surface() const;
   /// The basis' first `d` eigenfields face by face (float32), for preview strokes through the
-  /// faces they reach only: made on first use (`2 nf d` floats, as much memory as those
-  /// eigenfunctions in double) and kept while a session of that size holds it.  Null until the
-  /// basis is ready.
+  /// faces they reach only (`2 nf d` floats, as much memory as those eigenfunctions in double),
+  /// kept while a session of that size holds them.  Made on first request: at once if they take
+  /// less than 64 MB, else by a background job (seconds at 346k faces), and null until it is
+  /// done (the sessions send no preview meanwhile).  Null until the basis is ready.
   std::shared_ptr<const TVF::Eigenfield_rows> eigenfield_rows(int d) const;
 
 private:
@@ -126,8 +128,13 @@ private:
   mutable std::unique_ptr<Outgoing> mesh_message_;
   mutable std::once_flag mesh_once_;
   mutable std::shared_ptr<const TVF::Streamline_surface> surface_;   // guarded by mutex_
-  mutable std::map<int, std::weak_ptr<const TVF::Eigenfield_rows>> rows_; // by d, guarded by rows_mutex_
-  mutable std::mutex rows_mutex_; // held while rows are made (seconds at 346k faces)
+  struct Rows_slot
+  {
+    std::weak_ptr<const TVF::Eigenfield_rows> rows;
+    std::shared_future<std::shared_ptr<const TVF::Eigenfield_rows>> job; // valid while being made
+  };
+  mutable std::map<int, Rows_slot> rows_; // by d, guarded by rows_mutex_
+  mutable std::mutex rows_mutex_;
 };
 
 /// One page's editing session: its design (vector field or n-field), its display, and the
