@@ -175,9 +175,10 @@ public:
   /// Frame coordinates of the vector of face `f` (for an n-field: any one of its n vectors, as
   /// the whole-field constructor of `Streamline_tracer` takes them).
   virtual std::array<double, 2> face_vector(int f) const = 0;
-  /// A hint: `face_vector(f)` may be asked for soon (a walk is in a neighbouring face, or `f`
-  /// holds a later root of fur).  A source whose faces wait for memory may start fetching;
-  /// the default does nothing.
+  /// A hint: `face_vector(f)` will be asked for soon (`f` holds one of the next roots of fur).
+  /// A source whose faces wait for memory may start fetching; the default does nothing.  (Walks
+  /// give no hints: prefetching both faces a walk may enter next cost the preview twice its time
+  /// at 69k faces, the face not entered being fetched for nothing.)
   virtual void will_need(int f) const { (void)f; }
 };
 

@@ -271,13 +271,6 @@ Walk Streamline_walker::walk(Position pos, const Walk_settings& s, Proximity& pr
       w.stop = Streamline_stop::zero_field;
       break;
     }
-    if(on_demand) // the faces the walk may enter next
-      for(int k = 0; k < 3; ++k)
-        if(k != pos.entered_edge)
-        {
-          const int e = mesh->face_edges(f)[k];
-          if(!mesh->is_boundary_edge(e)) hint(mesh->edge_faces(e)[0] == f ? mesh->edge_faces(e)[1] : mesh->edge_faces(e)[0]);
-        }
     const V2 d = direction(f, pos.branch, s);
     const std::array<double, 3> rate = {dot2(F.gradient[0], d), dot2(F.gradient[1], d), dot2(F.gradient[2], d)};
     if(pos.entered_edge >= 0 && !(rate[pos.entered_edge] > 0))
