@@ -13,12 +13,17 @@
 // median angle between face vectors, constraint residual, energy ratio (also for a smooth
 // constraint set, with and without its constraints near a boundary).  Then exact answers:
 // the timeline of one constraint add with Refining_spline_solver (reduced field ready,
-// exact field ready, exact value edits), whose exact point ends each error-time curve.
+// exact field ready, exact value edits), whose exact point ends each error-time curve.  And the
+// editor's preview (issue 36): fur strokes of the reduced field traced through the faces they reach
+// only (Reduced_face_vectors) against the whole reduced field and the same fur, with the strokes'
+// difference (the same roots: identical up to rounding).
 //
 // Usage: bench_design [data-dir] [--meshes rocker,bunny,armadillo] [--sizes 50,100,...]
 //                     [--cache DIR] (saves / loads bases there)
 //                     [--chart FILE.svg] (error against time per edit, one curve per mesh and constraint set)
 //                     [--default-allocator] (without Model_reduction::keep_freed_memory(), which the tvf tool calls)
+//                     [--preview-only] (only the preview strokes against the whole reduced field, and the
+//                     exact answers' timeline: the table of issue 36)
 //        bench_design [data-dir] --write-meshes DIR [--meshes ...]: writes the benchmark meshes (DIR/<mesh>.off,
 //                     as subdivided here) and their 30 table constraints (DIR/<mesh>-constraints.json) for
 //                     `tvf serve` and bench/bench_editor.mjs, then stops.
@@ -28,9 +33,11 @@
 
 #include <CGAL/Tangent_vector_fields/Eigenfield_basis.h>
 #include <CGAL/Tangent_vector_fields/Full_spline_solver.h>
+#include <CGAL/Tangent_vector_fields/Reduced_face_vectors.h>
 #include <CGAL/Tangent_vector_fields/Reduced_spline_solver.h>
 #include <CGAL/Tangent_vector_fields/Refining_spline_solver.h>
 #include <CGAL/Tangent_vector_fields/Soft_field_design.h>
+#include <CGAL/Tangent_vector_fields/Streamline_tracer.h>
 #include <CGAL/Tangent_vector_fields/constraint_file_io.h>
 #include <CGAL/Model_reduction/keep_freed_memory.h>
 #include <CGAL/Model_reduction/svg_chart.h>
@@ -170,6 +177,55 @@ double median_angle_degrees(const Eigen::VectorXd& x, const Eigen::VectorXd& ref
   return angles[angles.size() / 2];
 }
 
+double median_of(std::vector<double> v)
+{
+  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+  return v[v.size() / 2];
+}
+
+// The editor's fur (Display_settings' defaults, as Field_design::lines draws it).
+TVF::Fur_options editor_fur()
+{
+  TVF::Fur_options fur;
+  fur.number_of_strokes = 4000;
+  fur.length = 0.02;
+  fur.scale_length_by_magnitude = true;
+  fur.magnitude_reference = TVF::Fur_options::Magnitude_reference::roots;
+  return fur;
+}
+
+// The preview's strokes against those of the whole field: the largest distance between
+// corresponding points (relative to the diagonal) and the strokes whose point or face lists
+// differ (a different walk, not only rounding).
+struct Stroke_difference
+{
+  double largest = 0;
+  int differing = 0;
+  bool same_count = true;
+};
+
+Stroke_difference compare_strokes(const std::vector<TVF::Streamline>& a, const std::vector<TVF::Streamline>& b,
+                                  double diagonal)
+{
+  Stroke_difference d;
+  d.same_count = a.size() == b.size();
+  for(std::size_t i = 0; i < std::min(a.size(), b.size()); ++i)
+  {
+    if(a[i].points.size() != b[i].points.size() || a[i].faces != b[i].faces)
+    {
+      ++d.differing;
+      continue;
+    }
+    for(std::size_t j = 0; j < a[i].points.size(); ++j)
+    {
+      const auto& p = a[i].points[j];
+      const auto& q = b[i].points[j];
+      d.largest = std::max(d.largest, std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]) / diagonal);
+    }
+  }
+  return d;
+}
+
 std::vector<int> parse_list(const std::string& s)
 {
   std::vector<int> v;
@@ -189,7 +245,8 @@ int main(int argc, char** argv)
   chart.x_label = "constraint add + solve [s]";
   chart.y_label = "relative L2(MX) error vs full";
   std::vector<int> sizes = {50, 100, 200, 500, 1000, 2000};
-  bool default_allocator = false;
+  bool default_allocator = false, preview_only = false;
+  std::vector<std::string> preview_rows;
   for(int i = 1; i < argc; ++i)
   {
     if(!std::strcmp(argv[i], "--meshes") && i + 1 < argc) which = argv[++i];
@@ -198,6 +255,7 @@ int main(int argc, char** argv)
     else if(!std::strcmp(argv[i], "--chart") && i + 1 < argc) chart_file = argv[++i];
     else if(!std::strcmp(argv[i], "--write-meshes") && i + 1 < argc) write_dir = argv[++i];
     else if(!std::strcmp(argv[i], "--default-allocator")) default_allocator = true;
+    else if(!std::strcmp(argv[i], "--preview-only")) preview_only = true;
     else dir = argv[i];
   }
   // As the tvf tool does (Model_reduction::keep_freed_memory.h); --default-allocator measures without it.
@@ -254,7 +312,6 @@ int main(int argc, char** argv)
       double seconds, bytes, reduction_error;
       Eigen::VectorXd field;
     };
-    std::vector<Double_reconstruction> double_reconstructions;
     const auto constraints = table_constraints(ops.mesh(), 7);
     const auto smooth = smooth_constraints(ops.mesh(), 5);
     const TVF::Field_constraint extra =
@@ -278,146 +335,153 @@ int main(int argc, char** argv)
     full.field();
     const double full_edit = seconds_since(start);
     full.change(full.constraint_ids().front(), constraints[0]);
-    start = Clock::now();
-    TVF::Full_soft_design full_soft(hodge);
-    for(const auto& c : constraints) full_soft.add(c);
-    full_soft.field();
-    const double full_soft_total = seconds_since(start);
-    start = Clock::now();
-    const int soft_extra = full_soft.add(extra);
-    full_soft.field();
-    const double full_soft_add = seconds_since(start);
-    full_soft.remove(soft_extra);
-    TVF::Full_spline_solver full_smooth(hodge);
-    full_smooth.add(smooth);
-    const Eigen::VectorXd full_smooth_field = full_smooth.field();
-    // The smooth set without the constraints near a boundary (within 2% of the diagonal):
-    // the eigenfields are tangent to the boundary, so a constraint crossing it close by is
-    // met only through eigenfields far above any affordable d.
-    const auto smooth_away = away_from_boundary(ops.mesh(), smooth, 0.02 * bounding_box_diagonal(ops.mesh()));
-    TVF::Full_spline_solver full_away(hodge);
-    full_away.add(smooth_away);
-    const Eigen::VectorXd full_away_field = full_away.field();
-
-    std::printf("== %s: %d faces, %d harmonic fields; basis of %d: %.1f s (%s)\n", s.key.c_str(), faces,
-                hodge->harmonic_dimension(), basis->size(), basis_seconds, loaded ? "loaded" : "computed");
-    std::printf("full TVFS: factor %.2f s (W, W* shared with the basis computation), 54 pull-backs %.2f s"
-                " (second-order residual %.1e), total %.2f s; add 1 constraint %.3f s; value edit %.1f ms\n",
-                full.statistics().factor_seconds, full.statistics().pull_back_seconds, full.statistics().residual,
-                full_total, full_add, 1e3 * full_edit);
-    std::printf("full soft: factor %.2f s (W, W*), 54 pull-backs %.2f s, solve %.3f s, total %.2f s (second-order"
-                " residual %.1e); add 1 constraint %.3f s\n\n",
-                full_soft.factor_seconds(), full_soft.pull_back_seconds(), full_soft.solve_seconds(), full_soft_total,
-                full_soft.residual(), full_soft_add);
-    std::printf("%6s | %9s %9s %9s %9s %8s | %9s %9s | %9s %8s %9s %9s %9s | %9s\n", "d", "setup", "edit", "add",
-                "reconstr", "GB/s", "soft fac", "soft sol", "rel L2", "med deg", "c. resid", "E ratio", "speed-up",
-                "full/red");
-    std::vector<std::string> smooth_rows;
+    std::vector<Double_reconstruction> double_reconstructions;
     MR::Chart_series random_series{s.key + ", random set", {}, {}}, smooth_series{s.key + ", smooth set", {}, {}};
-    for(int d : sizes)
+    if(preview_only)
+      std::printf("== %s: %d faces, %d harmonic fields; basis of %d: %.1f s (%s)\n", s.key.c_str(), faces,
+                  hodge->harmonic_dimension(), basis->size(), basis_seconds, loaded ? "loaded" : "computed");
+    if(!preview_only) // the table of every d
     {
-      if(d > basis->size()) continue;
       start = Clock::now();
-      TVF::Reduced_spline_solver reduced(basis, d);
-      try
-      {
-        reduced.add(constraints);
-      }
-      catch(const TVF::Infeasible_constraints& e)
-      {
-        std::printf("%6d | refused: %s\n", d, e.what());
-        continue;
-      }
-      reduced.coefficients();
-      const double setup = seconds_since(start);
-      // Value edits: alternate two values of the first vector constraint.
-      const int edits = 200;
-      auto a = constraints[0], b = constraints[0];
-      b.vector = ops.mesh().from_frame(b.face, 0.0, 1.0);
-      const TVF::Constraint_id first = reduced.constraint_ids().front();
+      TVF::Full_soft_design full_soft(hodge);
+      for(const auto& c : constraints) full_soft.add(c);
+      full_soft.field();
+      const double full_soft_total = seconds_since(start);
       start = Clock::now();
-      for(int i = 0; i < edits; ++i)
+      const int soft_extra = full_soft.add(extra);
+      full_soft.field();
+      const double full_soft_add = seconds_since(start);
+      full_soft.remove(soft_extra);
+      TVF::Full_spline_solver full_smooth(hodge);
+      full_smooth.add(smooth);
+      const Eigen::VectorXd full_smooth_field = full_smooth.field();
+      // The smooth set without the constraints near a boundary (within 2% of the diagonal):
+      // the eigenfields are tangent to the boundary, so a constraint crossing it close by is
+      // met only through eigenfields far above any affordable d.
+      const auto smooth_away = away_from_boundary(ops.mesh(), smooth, 0.02 * bounding_box_diagonal(ops.mesh()));
+      TVF::Full_spline_solver full_away(hodge);
+      full_away.add(smooth_away);
+      const Eigen::VectorXd full_away_field = full_away.field();
+
+      std::printf("== %s: %d faces, %d harmonic fields; basis of %d: %.1f s (%s)\n", s.key.c_str(), faces,
+                  hodge->harmonic_dimension(), basis->size(), basis_seconds, loaded ? "loaded" : "computed");
+      std::printf("full TVFS: factor %.2f s (W, W* shared with the basis computation), 54 pull-backs %.2f s"
+                  " (second-order residual %.1e), total %.2f s; add 1 constraint %.3f s; value edit %.1f ms\n",
+                  full.statistics().factor_seconds, full.statistics().pull_back_seconds, full.statistics().residual,
+                  full_total, full_add, 1e3 * full_edit);
+      std::printf("full soft: factor %.2f s (W, W*), 54 pull-backs %.2f s, solve %.3f s, total %.2f s (second-order"
+                  " residual %.1e); add 1 constraint %.3f s\n\n",
+                  full_soft.factor_seconds(), full_soft.pull_back_seconds(), full_soft.solve_seconds(), full_soft_total,
+                  full_soft.residual(), full_soft_add);
+      std::printf("%6s | %9s %9s %9s %9s %8s | %9s %9s | %9s %8s %9s %9s %9s | %9s\n", "d", "setup", "edit", "add",
+                  "reconstr", "GB/s", "soft fac", "soft sol", "rel L2", "med deg", "c. resid", "E ratio", "speed-up",
+                  "full/red");
+      std::vector<std::string> smooth_rows;
+      for(int d : sizes)
       {
-        reduced.change(first, i % 2 ? a : b);
-        reduced.coefficients();
-      }
-      const double edit = seconds_since(start) / edits;
-      reduced.change(first, a);
-      // Constraint add + solve, then remove (not timed).
-      const int adds = 20;
-      double add = 0;
-      for(int i = 0; i < adds; ++i)
-      {
+        if(d > basis->size()) continue;
         start = Clock::now();
-        const TVF::Constraint_id id = reduced.add(extra);
+        TVF::Reduced_spline_solver reduced(basis, d);
+        try
+        {
+          reduced.add(constraints);
+        }
+        catch(const TVF::Infeasible_constraints& e)
+        {
+          std::printf("%6d | refused: %s\n", d, e.what());
+          continue;
+        }
         reduced.coefficients();
-        add += seconds_since(start);
-        reduced.remove(id);
-      }
-      add /= adds;
-      reduced.coefficients();
-      // Reconstruction of the full field (two dense and two sparse products).
-      start = Clock::now();
-      const Eigen::VectorXd field = reduced.field();
-      const double reconstruction = seconds_since(start);
-      int exact = 0, coexact = 0;
-      for(int k = 0; k < d; ++k)
-        (basis->type(k) == TVF::Eigenfield_type::exact ? exact : coexact) += basis->type(k) != TVF::Eigenfield_type::harmonic;
-      const double bytes = 8.0 * (double(exact) * ops.mesh().number_of_vertices() +
-                                  double(coexact) * ops.mesh().number_of_interior_edges());
-      // Reduced soft design.
-      start = Clock::now();
-      TVF::Reduced_soft_design soft(basis, d);
-      for(const auto& c : constraints) soft.add(c);
-      const double soft_factor = seconds_since(start);
-      soft.coefficients();
-      start = Clock::now();
-      for(int i = 0; i < edits; ++i)
-      {
-        soft.change(0, i % 2 ? a : b);
+        const double setup = seconds_since(start);
+        // Value edits: alternate two values of the first vector constraint.
+        const int edits = 200;
+        auto a = constraints[0], b = constraints[0];
+        b.vector = ops.mesh().from_frame(b.face, 0.0, 1.0);
+        const TVF::Constraint_id first = reduced.constraint_ids().front();
+        start = Clock::now();
+        for(int i = 0; i < edits; ++i)
+        {
+          reduced.change(first, i % 2 ? a : b);
+          reduced.coefficients();
+        }
+        const double edit = seconds_since(start) / edits;
+        reduced.change(first, a);
+        // Constraint add + solve, then remove (not timed).
+        const int adds = 20;
+        double add = 0;
+        for(int i = 0; i < adds; ++i)
+        {
+          start = Clock::now();
+          const TVF::Constraint_id id = reduced.add(extra);
+          reduced.coefficients();
+          add += seconds_since(start);
+          reduced.remove(id);
+        }
+        add /= adds;
+        reduced.coefficients();
+        // Reconstruction of the full field (two dense and two sparse products).
+        start = Clock::now();
+        const Eigen::VectorXd field = reduced.field();
+        const double reconstruction = seconds_since(start);
+        int exact = 0, coexact = 0;
+        for(int k = 0; k < d; ++k)
+          (basis->type(k) == TVF::Eigenfield_type::exact ? exact : coexact) += basis->type(k) != TVF::Eigenfield_type::harmonic;
+        const double bytes = 8.0 * (double(exact) * ops.mesh().number_of_vertices() +
+                                    double(coexact) * ops.mesh().number_of_interior_edges());
+        // Reduced soft design.
+        start = Clock::now();
+        TVF::Reduced_soft_design soft(basis, d);
+        for(const auto& c : constraints) soft.add(c);
+        const double soft_factor = seconds_since(start);
         soft.coefficients();
+        start = Clock::now();
+        for(int i = 0; i < edits; ++i)
+        {
+          soft.change(0, i % 2 ? a : b);
+          soft.coefficients();
+        }
+        const double soft_solve = seconds_since(start) / edits;
+        // Errors against the full spline.
+        const double error = relative_mx_error(masses, field, full_field);
+        double_reconstructions.push_back({d, reconstruction, bytes, error, field});
+        const double angle = median_angle_degrees(field, full_field);
+        const double ratio = reduced.report().energy / full.report().energy;
+        random_series.x.push_back(add);
+        random_series.y.push_back(error);
+        std::printf("%6d | %9.3f %9.4f %9.3f %9.2f %8.2f | %9.2f %9.4f | %9.2e %8.3f %9.1e %9.4f %9.0f | %9.0f\n", d,
+                    1e3 * setup, 1e3 * edit, 1e3 * add, 1e3 * reconstruction, bytes / reconstruction / 1e9,
+                    1e3 * soft_factor, 1e3 * soft_solve, error, angle, reduced.report().constraint_residual, ratio,
+                    full_add / add, full_total / setup);
+        std::fflush(stdout);
+        // The smooth constraint set: errors only.
+        TVF::Reduced_spline_solver reduced_smooth(basis, d);
+        try
+        {
+          reduced_smooth.add(smooth);
+          const Eigen::VectorXd x = reduced_smooth.field();
+          smooth_series.x.push_back(add); // the add time measured on the random set at this d
+          smooth_series.y.push_back(relative_mx_error(masses, x, full_smooth_field));
+          TVF::Reduced_spline_solver reduced_away(basis, d);
+          reduced_away.add(smooth_away);
+          char line[256];
+          std::snprintf(line, sizeof line, "%6d | %9.2e %8.3f %9.1e %9.4f | %9.2e\n", d,
+                        relative_mx_error(masses, x, full_smooth_field), median_angle_degrees(x, full_smooth_field),
+                        reduced_smooth.report().constraint_residual,
+                        reduced_smooth.report().energy / full_smooth.report().energy,
+                        relative_mx_error(masses, reduced_away.field(), full_away_field));
+          smooth_rows.push_back(line);
+        }
+        catch(const TVF::Infeasible_constraints&)
+        {
+          smooth_rows.push_back(std::to_string(d) + " | refused (basis too small)\n");
+        }
       }
-      const double soft_solve = seconds_since(start) / edits;
-      // Errors against the full spline.
-      const double error = relative_mx_error(masses, field, full_field);
-      double_reconstructions.push_back({d, reconstruction, bytes, error, field});
-      const double angle = median_angle_degrees(field, full_field);
-      const double ratio = reduced.report().energy / full.report().energy;
-      random_series.x.push_back(add);
-      random_series.y.push_back(error);
-      std::printf("%6d | %9.3f %9.4f %9.3f %9.2f %8.2f | %9.2f %9.4f | %9.2e %8.3f %9.1e %9.4f %9.0f | %9.0f\n", d,
-                  1e3 * setup, 1e3 * edit, 1e3 * add, 1e3 * reconstruction, bytes / reconstruction / 1e9,
-                  1e3 * soft_factor, 1e3 * soft_solve, error, angle, reduced.report().constraint_residual, ratio,
-                  full_add / add, full_total / setup);
-      std::fflush(stdout);
-      // The smooth constraint set: errors only.
-      TVF::Reduced_spline_solver reduced_smooth(basis, d);
-      try
-      {
-        reduced_smooth.add(smooth);
-        const Eigen::VectorXd x = reduced_smooth.field();
-        smooth_series.x.push_back(add); // the add time measured on the random set at this d
-        smooth_series.y.push_back(relative_mx_error(masses, x, full_smooth_field));
-        TVF::Reduced_spline_solver reduced_away(basis, d);
-        reduced_away.add(smooth_away);
-        char line[256];
-        std::snprintf(line, sizeof line, "%6d | %9.2e %8.3f %9.1e %9.4f | %9.2e\n", d,
-                      relative_mx_error(masses, x, full_smooth_field), median_angle_degrees(x, full_smooth_field),
-                      reduced_smooth.report().constraint_residual,
-                      reduced_smooth.report().energy / full_smooth.report().energy,
-                      relative_mx_error(masses, reduced_away.field(), full_away_field));
-        smooth_rows.push_back(line);
-      }
-      catch(const TVF::Infeasible_constraints&)
-      {
-        smooth_rows.push_back(std::to_string(d) + " | refused (basis too small)\n");
-      }
+      std::printf("\nsmooth constraint set (30 vectors from a smooth ambient field), reduced TVFS against full;\n"
+                  "away: the %d of them farther than 2%% of the bounding-box diagonal from every boundary edge:\n"
+                  "%6s | %9s %8s %9s %9s | %9s\n", static_cast<int>(smooth_away.size()), "d", "rel L2", "med deg", "c. resid",
+                  "E ratio", "away");
+      for(const std::string& line : smooth_rows) std::printf("%s", line.c_str());
     }
-    std::printf("\nsmooth constraint set (30 vectors from a smooth ambient field), reduced TVFS against full;\n"
-                "away: the %d of them farther than 2%% of the bounding-box diagonal from every boundary edge:\n"
-                "%6s | %9s %8s %9s %9s | %9s\n", static_cast<int>(smooth_away.size()), "d", "rel L2", "med deg", "c. resid",
-                "E ratio", "away");
-    for(const std::string& line : smooth_rows) std::printf("%s", line.c_str());
 
     // Exact answers: the timeline of one vector constraint added to the 30 with a basis of
     // d = 1000 (or the largest below) and the full solver refining it (Refining_spline_solver).
@@ -513,8 +577,76 @@ int main(int argc, char** argv)
       random_series.x.push_back(median(exact_ready)); // the curve's exact endpoint
       random_series.y.push_back(exact_error);
     }
-    // The same basis with its eigenfunctions converted to float32 in place (no copy: the
-    // armadillo's 2000 eigenfields are 5.6 GB in double).
+    // The editor's preview (issue 36): the fur of the reduced field of the 30 constraints, traced
+    // through the faces it reaches only, against the whole reduced field and the same fur; with
+    // eigenfunction rows in the basis' precision (double) and in float32.
+    if(dt > 0)
+    {
+      TVF::Reduced_spline_solver reduced(basis, dt);
+      reduced.add(constraints);
+      start = Clock::now();
+      const TVF::Streamline_surface surface(ops.shared_mesh());
+      const double surface_seconds = seconds_since(start);
+      const TVF::Fur_options fur = editor_fur();
+      std::vector<double> whole_field, whole_lines;
+      std::vector<TVF::Streamline> whole;
+      for(int i = 0; i < 5; ++i)
+      {
+        // As the editor's field message does it: the whole reduced field, then the fur on it.
+        start = Clock::now();
+        const Eigen::VectorXd x = reduced.field();
+        whole_field.push_back(seconds_since(start));
+        start = Clock::now();
+        whole = TVF::Streamline_tracer(ops.shared_mesh(), x).fur(fur);
+        whole_lines.push_back(seconds_since(start));
+      }
+      for(const TVF::Eigenfunction_precision precision :
+          {TVF::Eigenfunction_precision::float32, TVF::Eigenfunction_precision::float64})
+      {
+        const bool single = precision == TVF::Eigenfunction_precision::float32;
+        // Double rows only where they fit beside the basis (the armadillo's would be 5.5 GB).
+        if(!single && 16.0 * faces * dt > 2e9)
+        {
+          std::printf("\n(no double eigenfield rows for %s: %.1f GB)\n", s.key.c_str(), 16.0 * faces * dt / 1e9);
+          continue;
+        }
+        start = Clock::now();
+        auto rows = std::make_shared<const TVF::Eigenfield_rows>(basis, dt, precision);
+        const double rows_seconds = seconds_since(start);
+        std::vector<double> preview_lines;
+        std::vector<TVF::Streamline> preview;
+        std::size_t faces_read = 0;
+        // As the editor does: one source per basis size, given each edit's coefficients.
+        const auto source = std::make_shared<TVF::Reduced_face_vectors>(rows);
+        for(int i = 0; i < 5; ++i)
+        {
+          start = Clock::now();
+          source->set_coefficients(reduced.coefficients());
+          preview = TVF::Streamline_tracer(surface, source).fur(fur);
+          preview_lines.push_back(seconds_since(start));
+          faces_read = source->faces_asked();
+        }
+        const Stroke_difference difference = compare_strokes(preview, whole, bounding_box_diagonal(ops.mesh()));
+        std::printf("\npreview strokes (d = %d; 4000 fur strokes of 0.02 diagonal scaled by the magnitude at the roots;"
+                    " medians of 5): eigenfield rows by face in %s, %.2f GB, made in %.2f s (once per d), streamline surface"
+                    " %.1f ms (once)\n",
+                    dt, single ? "float32" : "double", rows->bytes() / 1e9, rows_seconds, 1e3 * surface_seconds);
+        const bool same = difference.same_count && difference.differing == 0 && difference.largest < 1e-6;
+        char line[512];
+        std::snprintf(line, sizeof line,
+                      "%-9s %7d %4s | %9.1f %9.1f %9.1f | %9.2f %7zu %5.1f%% | %7zu %7zu %9.1e %7d%s\n",
+                      s.key.c_str(), faces, single ? "f32" : "f64", 1e3 * median_of(whole_field),
+                      1e3 * median_of(whole_lines), 1e3 * (median_of(whole_field) + median_of(whole_lines)),
+                      1e3 * median_of(preview_lines), faces_read, 100.0 * faces_read / faces, preview.size(),
+                      whole.size(), difference.largest, difference.differing, same ? "  same strokes" : "  DIFFERENT");
+        std::printf("%s", line);
+        preview_rows.push_back(line);
+        rows.reset(); // before the next copy
+      }
+    }
+
+    if(preview_only)
+      continue;
     const double double_bytes = static_cast<double>(basis->memory_bytes());
     basis->set_precision(TVF::Eigenfunction_precision::float32);
     std::printf("\nreconstruction of the reduced field with eigenfunctions in double and in float32 (%.2f GB and %.2f GB);\n"
@@ -537,6 +669,18 @@ int main(int argc, char** argv)
     chart.series.push_back(smooth_series);
     std::printf("speed-up = full TVFS constraint add (1 pull-back with the factor kept) / reduced constraint add;\n"
                 "full/red = full TVFS from scratch (factor + 54 pull-backs) / reduced set-up.\n\n");
+  }
+  if(!preview_rows.empty())
+  {
+    std::printf("\nThe editor's preview (issue 36), d = 1000: whole = the reduced field U a of every face, then fur on it\n"
+                "(as the field message); preview = the same fur through the faces it reaches, U_f a per face from\n"
+                "the face's block of eigenfield rows (Eigenfield_rows, f32: float32 entries, the editor's; f64: double).\n"
+                "Same roots and lengths: the same strokes up to the rounding of the face vectors (distance: largest\n"
+                "between corresponding points / diagonal; differ: strokes whose walks differ).  Milliseconds.\n"
+                "%-9s %7s %4s | %9s %9s %9s | %9s %7s %6s | %7s %7s %9s %7s\n",
+                "mesh", "faces", "rows", "whole U a", "fur", "total", "preview", "faces", "", "strokes",
+                "(whole)", "distance", "differ");
+    for(const std::string& line : preview_rows) std::printf("%s", line.c_str());
   }
   if(!chart_file.empty() && !chart.series.empty())
   {

@@ -222,13 +222,15 @@ public:
     ws_.read(buffer);
     return decode(ws_.got_binary(), beast::buffers_to_string(buffer.data()));
   }
-  // The next message of `type`, skipping progress and status messages.
+  // The next message of `type`, skipping progress and status messages (and the preview strokes
+  // sent before a field, unless asked for).
   Message expect(const std::string& type)
   {
     for(;;)
     {
       Message m = receive();
       if(m.type() == "progress" || m.type() == "status") continue;
+      if(m.type() == "preview" && type != "preview") continue;
       EXPECT_EQ(m.type(), type) << (m.type() == "error" ? m.json.get<std::string>("message") : "");
       return m;
     }

@@ -30,6 +30,49 @@ TEST_F(Server_test, hello_sends_mesh_and_field)
   for(float x : s.field.floats.at("vectors")) EXPECT_EQ(x, 0.f); // no constraints: the zero field
 }
 
+// After an edit of a vector field with fur, the server first sends the preview: the fur of the
+// reduced answer traced through the faces it reaches only, then the field as always, whose fur
+// (traced on the whole reduced field, the truth here) has the same strokes.
+TEST_F(Server_test, preview_strokes_come_before_the_field_and_match_its_fur)
+{
+  Session s(server->address());
+  const int nf = s.info.json.get<int>("mesh.faces");
+  const double diagonal = s.info.json.get<double>("mesh.diagonal");
+  // Few strokes, so that they reach a fraction of the 320 faces.
+  s.client.send("{\"type\":\"set_display\",\"strokes\":20,\"length\":0.1}");
+  s.client.expect("field");
+  const int f = 17;
+  s.client.send("{\"type\":\"add\",\"request\":7,\"constraint\":" + vector_constraint(f, tangent(s.mesh, f)) + "}");
+  EXPECT_EQ(s.client.expect("added").json.get<int>("request"), 7);
+  const Message preview = s.client.receive();
+  ASSERT_EQ(preview.type(), "preview") << "the preview comes before the field";
+  const Message field = s.client.receive();
+  ASSERT_EQ(field.type(), "field");
+  EXPECT_EQ(preview.json.get<int>("request"), 7);
+  EXPECT_EQ(field.json.get<int>("request"), 7);
+  for(const char* t : {"solve_ms", "lines_ms", "server_ms"})
+    EXPECT_GE(preview.json.get<double>(std::string("timings.") + t), 0.0) << t;
+  // The error bound of the reduced answer, as the field (reduced too) reports it.
+  EXPECT_EQ(preview.json.get<std::string>("report.error_bound"), field.json.get<std::string>("report.error_bound"));
+  const int faces_read = preview.json.get<int>("faces_read");
+  EXPECT_GT(faces_read, 0);
+  EXPECT_LT(faces_read, nf) << "the preview read every face";
+  const std::vector<float>& a = preview.floats.at("lines");
+  const std::vector<float>& b = field.floats.at("lines");
+  ASSERT_EQ(a.size(), b.size());
+  ASSERT_GT(a.size(), 0u);
+  double largest = 0;
+  for(std::size_t i = 0; i < a.size(); ++i) largest = std::max(largest, std::abs(double(a[i]) - double(b[i])));
+  EXPECT_LE(largest, 1e-6 * diagonal); // float32 transfer of the same strokes
+
+  // No preview without fur: streamlines cover the whole surface, and "none" draws no lines.
+  for(const char* lines : {"streamlines", "none"})
+  {
+    s.client.send(std::string("{\"type\":\"set_display\",\"lines\":\"") + lines + "\"}");
+    EXPECT_EQ(s.client.receive().type(), "field") << lines;
+  }
+}
+
 TEST_F(Server_test, field_honours_constraints_and_edits)
 {
   Session s(server->address());

@@ -23,6 +23,9 @@ namespace CGAL {
 namespace Tangent_vector_fields {
 
 class N_field_operators;
+namespace internal {
+struct Walker_surface;
+}
 
 /// Why one end of a streamline stopped.
 enum class Streamline_stop {
@@ -138,11 +141,61 @@ struct Fur_options
   /// face (numbered from the face's first vector, as `Streamline_options::branch`).
   int branch = -1;
   /// Scale each stroke's length by the magnitude of the field at its root relative to
-  /// the largest magnitude, so that the strokes show the strength of the field.
+  /// the largest magnitude (`magnitude_reference`), so that the strokes show the strength of
+  /// the field.
   bool scale_length_by_magnitude = false;
+  /// Which largest magnitude the strokes' lengths and the zero-field tolerance are relative to.
+  enum class Magnitude_reference
+  {
+    all_faces, ///< the largest over all faces of the field (`Streamline_tracer::maximum_magnitude`)
+    roots      ///< the largest over the faces of this fur's roots (area-uniform samples of the
+               ///< surface): needs only the roots' faces, so a field given on demand can tell it; no
+               ///< stroke is longer than `length`
+  };
+  /// A tracer of a field on demand knows no largest magnitude over all faces: it needs `roots`
+  /// (or `scale_length_by_magnitude` off: its zero-field tolerance is then relative to the
+  /// roots' largest magnitude too).
+  Magnitude_reference magnitude_reference = Magnitude_reference::all_faces;
   unsigned random_seed = 1;
   /// Zero-field tolerance and segment limit of each stroke (lengths and directions are set here).
   Streamline_options tracing;
+};
+
+/// \brief The vectors of a field face by face, for a tracer that reads only the faces its
+/// streamlines reach (fur of a field reconstructed from a reduced basis, say, where making
+/// the whole field costs far more than the strokes).
+///
+/// A tracer reads each face at most once, from one thread.
+class Face_vector_source
+{
+public:
+  virtual ~Face_vector_source() = default;
+  /// The number of faces of the mesh.
+  virtual int number_of_faces() const = 0;
+  /// Frame coordinates of the vector of face `f` (for an n-field: any one of its n vectors, as
+  /// the whole-field constructor of `Streamline_tracer` takes them).
+  virtual std::array<double, 2> face_vector(int f) const = 0;
+  /// A hint: `face_vector(f)` will be asked for soon (`f` holds one of the next roots of fur).
+  /// A source whose faces wait for memory may start fetching; the default does nothing.  (Walks
+  /// give no hints: prefetching both faces a walk may enter next cost the preview twice its time
+  /// at 69k faces, the face not entered being fetched for nothing.)
+  virtual void will_need(int f) const { (void)f; }
+};
+
+/// \brief What the streamline tracers of one mesh share whatever their field: the faces
+/// around each vertex, the boundary vertices, the bounding box and the face areas.
+///
+/// Making it costs `O(faces)`; a tracer of a field on demand made per edit from a kept
+/// surface costs `O(vertices + faces)` bytes set to zero, and reads only the faces it walks.
+class Streamline_surface
+{
+public:
+  explicit Streamline_surface(std::shared_ptr<const Intrinsic_mesh> mesh);
+  const Intrinsic_mesh& mesh() const;
+
+private:
+  friend class Streamline_tracer;
+  std::shared_ptr<const internal::Walker_surface> impl_;
 };
 
 /// \brief Traces streamlines of one piecewise-constant field on one mesh.
@@ -211,6 +264,15 @@ public:
   ///         singular vertex does not exist.
   Streamline_tracer(std::shared_ptr<const Intrinsic_mesh> mesh, const Eigen::VectorXd& field, int n = 1,
                     const std::vector<int>& singular_vertices = std::vector<int>());
+  /// A field whose face vectors come from `field` when a streamline first reaches the face
+  /// (see `Face_vector_source`); otherwise as the constructor above, whose field is the case of
+  /// a source reading a whole vector.  The tracer's `maximum_magnitude` is the largest over the
+  /// faces read so far: `fur` with `scale_length_by_magnitude` needs
+  /// `Fur_options::Magnitude_reference::roots`.
+  /// \throws Invalid_input if the source has another number of faces than the mesh, `n < 1`, or
+  ///         a singular vertex does not exist; a trace throws it if a face vector read is not finite.
+  Streamline_tracer(const Streamline_surface& surface, std::shared_ptr<const Face_vector_source> field, int n = 1,
+                    const std::vector<int>& singular_vertices = std::vector<int>());
   /// An n-field in the power representation of `operators` (`z_f = r e^{i n theta}`, `2 nf`):
   /// branch `j` of face `f` is vector `j` of `operators.to_vectors(z, j)` (for `n = 1`, `z`
   /// itself), and streamlines stop at the interior vertices of non-zero index
@@ -232,8 +294,10 @@ public:
   double bounding_box_diagonal() const;
   /// `value` converted from `unit` to the mesh's units.
   double to_absolute(double value, Length_unit unit) const;
-  /// Largest magnitude of the face vectors.
+  /// Largest magnitude of the face vectors (a field on demand: of the faces read so far).
   double maximum_magnitude() const;
+  /// The faces whose vectors the tracer has read (all of them for a whole field, once traced).
+  std::size_t faces_read() const;
 
   /// Traces from a point of face `face` given by barycentric coordinates with respect
   /// to the face's corners in local order (`Intrinsic_mesh::face_vertices`); they are
@@ -279,10 +343,13 @@ public:
   /// Short strokes traced forward from random roots, uniformly distributed by area: per
   /// root one along each of the n vectors of its face, or one along the branch asked for
   /// (`Fur_options::branch`), consecutive in the result.  Strokes of zero length (roots in
-  /// zero-field faces) are left out.
+  /// zero-field faces) are left out.  The roots depend only on the mesh and `random_seed`: a
+  /// field on demand and the same field given whole give the same strokes (up to the rounding
+  /// of their face vectors) for the same options.
   /// \throws Invalid_input for a length that is not positive, neither a count nor a
-  ///         positive finite density, more than 1e7 strokes, a branch outside `[-1, n)`, or
-  ///         bad `tracing` options (as `trace`).
+  ///         positive finite density, more than 1e7 strokes, a branch outside `[-1, n)`,
+  ///         bad `tracing` options (as `trace`), or a field on demand with
+  ///         `scale_length_by_magnitude` and `Magnitude_reference::all_faces`.
   std::vector<Streamline> fur(const Fur_options& options) const;
 
 private:

@@ -42,7 +42,7 @@ std::vector<Streamline> evenly_spaced_streamlines(const Streamline_walker& walke
   // The streamlines fill the surface: about area / separation^2 of them, each sampled every
   // quarter separation.  Far more than any picture holds means a separation in the wrong
   // unit: it would run for ever, and even a few lines would exhaust the memory with samples.
-  const double expected_lines = walker.total_area / (separation * separation);
+  const double expected_lines = walker.surface->total_area / (separation * separation);
   if(!(expected_lines <= max_expected_streamlines))
     throw Invalid_input("evenly spaced streamlines: the separation is too small for the surface (about " +
                         short_number(expected_lines) + " streamlines would fill it, at most 1e7)");
@@ -52,9 +52,9 @@ std::vector<Streamline> evenly_spaced_streamlines(const Streamline_walker& walke
   const double closure = std::max(test_distance, o.tracing.loop_closure_tolerance * walker.mesh->mean_edge_length());
   const Family_test family(walker.n);
 
-  Sample_grid grid(separation, walker.box_min);
+  Sample_grid grid(separation, walker.surface->box_min);
   std::mt19937_64 gen(o.random_seed);
-  const std::vector<double> cumulative = walker.cumulative_areas();
+  const std::vector<double>& cumulative = walker.cumulative_areas();
   const long random_candidates = static_cast<long>(std::ceil(4 * expected_lines)) + 16;
 
   std::vector<Streamline> result;
@@ -67,7 +67,7 @@ std::vector<Streamline> evenly_spaced_streamlines(const Streamline_walker& walke
 
   // A streamline from `seed` along its branch, kept if it is long enough.
   auto try_seed = [&](const Position& seed) {
-    if(full() || !(walker.faces[seed.face].magnitude > o.tracing.zero_field_tolerance * walker.maximum_magnitude))
+    if(full() || !(walker.face(seed.face).magnitude > o.tracing.zero_field_tolerance * walker.maximum_magnitude))
       return;
     const V3 tangent = walker.unit_tangent(seed.face, seed.branch);
     if(!seed_is_free(seed.point, tangent)) return;

@@ -66,7 +66,7 @@ std::vector<Streamline> fur_strokes(const internal::Streamline_walker& walker, c
   {
     if(!(o.density > 0) || !std::isfinite(o.density))
       throw Invalid_input("fur: give number_of_strokes or a positive finite density");
-    const double expected = o.density * walker.total_area;
+    const double expected = o.density * walker.surface->total_area;
     if(!(expected <= max_strokes))
       throw Invalid_input("fur: the density gives " + internal::short_number(expected) + " strokes, more than 1e7");
     count = static_cast<long>(std::llround(expected));
@@ -74,8 +74,30 @@ std::vector<Streamline> fur_strokes(const internal::Streamline_walker& walker, c
   if(count > max_strokes)
     throw Invalid_input("fur: " + std::to_string(count) + " strokes asked, more than 1e7");
   const int first = o.branch < 0 ? 0 : o.branch, last = o.branch < 0 ? walker.n - 1 : o.branch;
+  const bool roots_reference = o.magnitude_reference == Fur_options::Magnitude_reference::roots;
+  if(walker.on_demand && o.scale_length_by_magnitude && !roots_reference)
+    throw Invalid_input("fur: a field given face by face knows its largest magnitude only over the faces it read: "
+                        "scale the strokes by the largest magnitude at the roots (Magnitude_reference::roots)");
+  // The roots depend only on the mesh and the random seed.  The magnitude the lengths and the
+  // zero-field test are relative to: the largest over all faces, or over the roots' faces (a
+  // field on demand reads only those before tracing): the generator then runs twice rather than
+  // keeping up to 1e7 roots.
+  const std::vector<double>& cumulative = walker.cumulative_areas();
+  double reference = walker.maximum_magnitude;
+  if(roots_reference || walker.on_demand)
+  {
+    reference = 0;
+    // A field on demand is told the faces of the roots a few ahead (`ahead`: the same roots).
+    const long lead = walker.on_demand ? 8 : 0;
+    std::mt19937_64 gen(o.random_seed), ahead(o.random_seed);
+    for(long i = 0; i < std::min(lead, count); ++i) walker.hint(walker.random_position(ahead, cumulative).face);
+    for(long i = 0; i < count; ++i)
+    {
+      if(i + lead < count && lead > 0) walker.hint(walker.random_position(ahead, cumulative).face);
+      reference = std::max(reference, walker.face(walker.random_position(gen, cumulative).face).magnitude);
+    }
+  }
   std::mt19937_64 gen(o.random_seed);
-  const std::vector<double> cumulative = walker.cumulative_areas();
   std::vector<Streamline> strokes;
   strokes.reserve(static_cast<std::size_t>(count * (last - first + 1)));
   for(long i = 0; i < count; ++i)
@@ -87,14 +109,14 @@ std::vector<Streamline> fur_strokes(const internal::Streamline_walker& walker, c
     t.length_unit = Length_unit::absolute;
     t.maximum_length = length;
     if(o.scale_length_by_magnitude)
-      t.maximum_length = length * walker.faces[root.face].magnitude / std::max(walker.maximum_magnitude, 1e-300);
+      t.maximum_length = length * walker.face(root.face).magnitude / std::max(reference, 1e-300);
     t.loop_closure_tolerance = 0;
     if(!(t.maximum_length > 0)) continue;
     for(int j = first; j <= last; ++j)
     {
       root.branch = j;
       No_proximity* none = nullptr;
-      Streamline s = walker.trace(root, t, 0, none, none, false, nullptr);
+      Streamline s = walker.trace(root, t, 0, none, none, false, nullptr, reference);
       if(s.points.size() >= 2) strokes.push_back(std::move(s));
     }
   }
@@ -112,6 +134,17 @@ struct Streamline_tracer::Impl : internal::Streamline_walker
 Streamline_tracer::Streamline_tracer(std::shared_ptr<const Intrinsic_mesh> mesh, const Eigen::VectorXd& field, int n,
                                      const std::vector<int>& singular_vertices)
   : impl_(std::make_unique<Impl>(std::move(mesh), field, n, singular_vertices))
+{}
+
+Streamline_surface::Streamline_surface(std::shared_ptr<const Intrinsic_mesh> mesh)
+  : impl_(std::make_shared<const internal::Walker_surface>(std::move(mesh)))
+{}
+
+const Intrinsic_mesh& Streamline_surface::mesh() const { return *impl_->mesh; }
+
+Streamline_tracer::Streamline_tracer(const Streamline_surface& surface, std::shared_ptr<const Face_vector_source> field,
+                                     int n, const std::vector<int>& singular_vertices)
+  : impl_(std::make_unique<Impl>(surface.impl_, std::move(field), n, singular_vertices))
 {}
 
 namespace internal {
@@ -156,9 +189,10 @@ const Intrinsic_mesh& Streamline_tracer::mesh() const { return *impl_->mesh; }
 int Streamline_tracer::n() const { return impl_->n; }
 int Streamline_tracer::number_of_families() const { return internal::number_of_families(impl_->n); }
 const std::vector<int>& Streamline_tracer::singular_vertices() const { return impl_->singular_list; }
-double Streamline_tracer::bounding_box_diagonal() const { return impl_->diagonal; }
+double Streamline_tracer::bounding_box_diagonal() const { return impl_->surface->diagonal; }
 double Streamline_tracer::to_absolute(double value, Length_unit unit) const { return impl_->to_absolute(value, unit); }
 double Streamline_tracer::maximum_magnitude() const { return impl_->maximum_magnitude; }
+std::size_t Streamline_tracer::faces_read() const { return impl_->faces_read(); }
 
 Streamline Streamline_tracer::trace(int face, const std::array<double, 3>& barycentric,
                                     const Streamline_options& options) const

@@ -16,39 +16,14 @@ namespace CGAL {
 namespace Tangent_vector_fields {
 namespace internal {
 
-Streamline_walker::Streamline_walker(std::shared_ptr<const Intrinsic_mesh> m, const Eigen::VectorXd& field,
-                                     int n_vectors, const std::vector<int>& singular_vertices)
-  : mesh(std::move(m)), n(n_vectors)
+Walker_surface::Walker_surface(std::shared_ptr<const Intrinsic_mesh> m) : mesh(std::move(m))
 {
   const Intrinsic_mesh& M = *mesh;
   const int nf = M.number_of_faces();
-  if(n < 1) throw Invalid_input("streamlines: n must be at least 1 (got " + std::to_string(n) + ")");
-  if(field.size() != 2 * static_cast<Eigen::Index>(nf))
-    throw Invalid_input("streamlines: the field has " + std::to_string(field.size()) +
-                        " frame coordinates, the mesh needs " + std::to_string(2 * nf));
-  if(!field.allFinite()) throw Invalid_input("streamlines: the field has non-finite entries");
-  turn.resize(n);
-  for(int j = 0; j < n; ++j) turn[j] = {std::cos(2 * M_PI * j / n), std::sin(2 * M_PI * j / n)};
-  faces.resize(nf);
-  for(int f = 0; f < nf; ++f)
-  {
-    Face_data& F = faces[f];
-    const double l2 = M.face_edge_length(f, 2);
-    F.corner = {V2{{0, 0}}, V2{{l2, 0}}, M.corner2_layout(f)};
-    const double twice_area = l2 * F.corner[2][1];
-    for(int k = 0; k < 3; ++k)
-    {
-      const V2& a = F.corner[(k + 1) % 3];
-      const V2& b = F.corner[(k + 2) % 3];
-      F.gradient[k] = {(a[1] - b[1]) / twice_area, (b[0] - a[0]) / twice_area};
-    }
-    F.direction = {field[2 * f], field[2 * f + 1]};
-    F.magnitude = std::hypot(F.direction[0], F.direction[1]);
-    maximum_magnitude = std::max(maximum_magnitude, F.magnitude);
-    total_area += M.face_area(f);
-  }
-
   const int nv = M.number_of_vertices();
+  cumulative_area.resize(nf);
+  for(int f = 0; f < nf; ++f) cumulative_area[f] = total_area += M.face_area(f);
+
   vertex_face_start.assign(nv + 1, 0);
   for(int f = 0; f < nf; ++f)
     for(int v : M.face_vertices(f)) ++vertex_face_start[v + 1];
@@ -57,17 +32,6 @@ Streamline_walker::Streamline_walker(std::shared_ptr<const Intrinsic_mesh> m, co
   std::vector<int> fill(vertex_face_start.begin(), vertex_face_start.end() - 1);
   for(int f = 0; f < nf; ++f)
     for(int v : M.face_vertices(f)) vertex_faces[fill[v]++] = f;
-
-  singular_vertex.assign(nv, 0);
-  for(int v : singular_vertices)
-  {
-    if(v < 0 || v >= nv)
-      throw Invalid_input("streamlines: singular vertex " + std::to_string(v) + " does not exist (the mesh has " +
-                          std::to_string(nv) + " vertices)");
-    if(!singular_vertex[v]) singular_list.push_back(v);
-    singular_vertex[v] = 1;
-  }
-  std::sort(singular_list.begin(), singular_list.end());
 
   boundary_vertex.assign(nv, 0);
   for(int e = 0; e < M.number_of_edges(); ++e)
@@ -88,13 +52,101 @@ Streamline_walker::Streamline_walker(std::shared_ptr<const Intrinsic_mesh> m, co
   diagonal = distance3(lo, hi);
 }
 
+namespace {
+
+// A whole field as a source: face f at rows 2f, 2f + 1.
+class Vector_source : public Face_vector_source
+{
+public:
+  explicit Vector_source(const Eigen::VectorXd& x) : x_(x) {}
+  int number_of_faces() const override { return static_cast<int>(x_.size() / 2); }
+  std::array<double, 2> face_vector(int f) const override { return {x_[2 * f], x_[2 * f + 1]}; }
+
+private:
+  Eigen::VectorXd x_;
+};
+
+} // namespace
+
+Streamline_walker::Streamline_walker(std::shared_ptr<const Intrinsic_mesh> m, const Eigen::VectorXd& field,
+                                     int n_vectors, const std::vector<int>& singular_vertices)
+{
+  const int nf = m->number_of_faces();
+  if(n_vectors < 1) throw Invalid_input("streamlines: n must be at least 1 (got " + std::to_string(n_vectors) + ")");
+  if(field.size() != 2 * static_cast<Eigen::Index>(nf))
+    throw Invalid_input("streamlines: the field has " + std::to_string(field.size()) +
+                        " frame coordinates, the mesh needs " + std::to_string(2 * nf));
+  if(!field.allFinite()) throw Invalid_input("streamlines: the field has non-finite entries");
+  surface = std::make_shared<const Walker_surface>(std::move(m));
+  mesh = surface->mesh;
+  source = std::make_shared<const Vector_source>(field);
+  for(int f = 0; f < nf; ++f) maximum_magnitude = std::max(maximum_magnitude, std::hypot(field[2 * f], field[2 * f + 1]));
+  set_up(n_vectors, singular_vertices);
+}
+
+Streamline_walker::Streamline_walker(std::shared_ptr<const Walker_surface> s,
+                                     std::shared_ptr<const Face_vector_source> field, int n_vectors,
+                                     const std::vector<int>& singular_vertices)
+  : surface(std::move(s)), mesh(surface->mesh), source(std::move(field)), on_demand(true)
+{
+  if(!source) throw Invalid_input("streamlines: no field given");
+  if(source->number_of_faces() != mesh->number_of_faces())
+    throw Invalid_input("streamlines: the field has " + std::to_string(source->number_of_faces()) +
+                        " faces, the mesh " + std::to_string(mesh->number_of_faces()));
+  if(n_vectors < 1) throw Invalid_input("streamlines: n must be at least 1 (got " + std::to_string(n_vectors) + ")");
+  set_up(n_vectors, singular_vertices);
+}
+
+void Streamline_walker::set_up(int n_vectors, const std::vector<int>& singular_vertices)
+{
+  n = n_vectors;
+  turn.resize(n);
+  for(int j = 0; j < n; ++j) turn[j] = {std::cos(2 * M_PI * j / n), std::sin(2 * M_PI * j / n)};
+  slot_.assign(mesh->number_of_faces(), -1);
+  const int nv = mesh->number_of_vertices();
+  singular_vertex.assign(nv, 0);
+  for(int v : singular_vertices)
+  {
+    if(v < 0 || v >= nv)
+      throw Invalid_input("streamlines: singular vertex " + std::to_string(v) + " does not exist (the mesh has " +
+                          std::to_string(nv) + " vertices)");
+    if(!singular_vertex[v]) singular_list.push_back(v);
+    singular_vertex[v] = 1;
+  }
+  std::sort(singular_list.begin(), singular_list.end());
+}
+
+const Streamline_walker::Face_data& Streamline_walker::load(int f) const
+{
+  const Intrinsic_mesh& M = *mesh;
+  Face_data F;
+  const double l2 = M.face_edge_length(f, 2);
+  F.corner = {V2{{0, 0}}, V2{{l2, 0}}, M.corner2_layout(f)};
+  const double twice_area = l2 * F.corner[2][1];
+  for(int k = 0; k < 3; ++k)
+  {
+    const V2& a = F.corner[(k + 1) % 3];
+    const V2& b = F.corner[(k + 2) % 3];
+    F.gradient[k] = {(a[1] - b[1]) / twice_area, (b[0] - a[0]) / twice_area};
+  }
+  const std::array<double, 2> v = source->face_vector(f);
+  if(!std::isfinite(v[0]) || !std::isfinite(v[1]))
+    throw Invalid_input("streamlines: the vector of face " + std::to_string(f) + " is not finite");
+  F.direction = {v[0], v[1]};
+  F.magnitude = std::hypot(v[0], v[1]);
+  maximum_magnitude = std::max(maximum_magnitude, F.magnitude);
+  slot_[f] = static_cast<int>(pool_.size());
+  pool_.push_back(F);
+  return pool_.back();
+}
+
 double Streamline_walker::to_absolute(double value, Length_unit unit) const
 {
   switch(unit)
   {
   case Length_unit::absolute: return value;
   case Length_unit::mean_edge_length: return value * mesh->mean_edge_length();
-  case Length_unit::bounding_box_diagonal: return value * diagonal;
+  case Length_unit::bounding_box_diagonal: return value * surface->diagonal;
   }
   return value;
 }
@@ -102,8 +154,8 @@ double Streamline_walker::to_absolute(double value, Length_unit unit) const
 V2 Streamline_walker::carried_across(int f, int g, int e, const V2& v) const
 {
   const auto& ev = mesh->edge_vertices(e);
-  const Face_data& F = faces[f];
-  const Face_data& G = faces[g];
+  const Face_data& F = face(f);
+  const Face_data& G = face(g);
   const V2& fa = F.corner[local_corner(f, ev[0])];
   const V2& fb = F.corner[local_corner(f, ev[1])];
   const V2& ga = G.corner[local_corner(g, ev[0])];
@@ -120,14 +172,15 @@ std::pair<int, int> Streamline_walker::face_leaving_vertex(int v, int exclude, c
 {
   int best = -1, best_branch = 0;
   double best_alignment = -infinity;
-  for(int i = vertex_face_start[v]; i < vertex_face_start[v + 1]; ++i)
+  const Walker_surface& S = *surface;
+  for(int i = S.vertex_face_start[v]; i < S.vertex_face_start[v + 1]; ++i)
   {
-    const int g = vertex_faces[i];
-    if(g == exclude || !(faces[g].magnitude > s.zero_threshold)) continue;
+    const int g = S.vertex_faces[i];
+    if(g == exclude || !(face(g).magnitude > s.zero_threshold)) continue;
     const int m = local_corner(g, v);
     const int branch = n == 1 ? 0 : matching_branch(g, mesh->to_frame(g, reference));
     const V2 d = direction(g, branch, s);
-    const Face_data& G = faces[g];
+    const Face_data& G = face(g);
     if(!(dot2(G.gradient[(m + 1) % 3], d) > 0 && dot2(G.gradient[(m + 2) % 3], d) > 0)) continue;
     const V3 w = mesh->from_frame(g, d[0], d[1]);
     const double alignment = dot3(w, incoming);
@@ -144,10 +197,11 @@ std::pair<int, int> Streamline_walker::face_leaving_vertex(int v, int exclude, c
 Streamline_stop Streamline_walker::stop_at_vertex(int v, const Walk_settings& s) const
 {
   bool any_field = false;
-  for(int i = vertex_face_start[v]; i < vertex_face_start[v + 1]; ++i)
-    any_field = any_field || faces[vertex_faces[i]].magnitude > s.zero_threshold;
+  const Walker_surface& S = *surface;
+  for(int i = S.vertex_face_start[v]; i < S.vertex_face_start[v + 1]; ++i)
+    any_field = any_field || face(S.vertex_faces[i]).magnitude > s.zero_threshold;
   if(!any_field) return Streamline_stop::zero_field;
-  return boundary_vertex[v] ? Streamline_stop::boundary : Streamline_stop::sink_vertex;
+  return S.boundary_vertex[v] ? Streamline_stop::boundary : Streamline_stop::sink_vertex;
 }
 
 template <class Proximity>
@@ -184,7 +238,7 @@ Walk Streamline_walker::walk(Position pos, const Walk_settings& s, Proximity& pr
       return w;
     }
     V3 incoming{{0, 0, 0}}, reference{{0, 0, 0}};
-    if(faces[pos.face].magnitude > s.zero_threshold)
+    if(face(pos.face).magnitude > s.zero_threshold)
     {
       const V2 d = direction(pos.face, pos.branch, s);
       const V2 u = field_vector(pos.face, pos.branch);
@@ -211,7 +265,7 @@ Walk Streamline_walker::walk(Position pos, const Walk_settings& s, Proximity& pr
       break;
     }
     const int f = pos.face;
-    const Face_data& F = faces[f];
+    const Face_data& F = face(f);
     if(!(F.magnitude > s.zero_threshold))
     {
       w.stop = Streamline_stop::zero_field;
@@ -487,7 +541,7 @@ Position Streamline_walker::start_position(int face, const Barycentric& beta, in
   return pos;
 }
 
-Walk_settings Streamline_walker::settings(const Streamline_options& o, double sign) const
+Walk_settings Streamline_walker::settings(const Streamline_options& o, double sign, double zero_reference) const
 {
   check_streamline_options(o);
   Walk_settings s;
@@ -495,7 +549,7 @@ Walk_settings Streamline_walker::settings(const Streamline_options& o, double si
   const double l = to_absolute(o.maximum_length, o.length_unit);
   s.maximum_length = l > 0 ? l : infinity;
   s.maximum_segments = o.maximum_segments;
-  s.zero_threshold = o.zero_field_tolerance * maximum_magnitude;
+  s.zero_threshold = o.zero_field_tolerance * (zero_reference >= 0 ? zero_reference : maximum_magnitude);
   return s;
 }
 
@@ -523,13 +577,13 @@ Streamline Streamline_walker::join(const Walk* backward, const Walk& forward, co
 template <class Proximity>
 Streamline Streamline_walker::trace(const Position& start, const Streamline_options& o, double closure_tolerance,
                                      Proximity* forward_proximity, Proximity* backward_proximity, bool keep_segments,
-                                     std::vector<Segment_record>* segments) const
+                                     std::vector<Segment_record>* segments, double zero_reference) const
 {
   No_proximity none;
   Walk forward, backward;
   if(o.forward)
   {
-    Walk_settings s = settings(o, 1);
+    Walk_settings s = settings(o, 1, zero_reference);
     s.check_closure = closure_tolerance > 0;
     s.seed_face = start.face;
     s.seed_branch = start.branch;
@@ -543,7 +597,7 @@ Streamline Streamline_walker::trace(const Position& start, const Streamline_opti
   const bool do_backward = o.backward && forward.stop != Streamline_stop::closed_loop;
   if(do_backward)
   {
-    Walk_settings s = settings(o, -1);
+    Walk_settings s = settings(o, -1, zero_reference);
     s.keep_segments = keep_segments;
     backward = backward_proximity ? walk(start, s, *backward_proximity) : walk(start, s, none);
   }
@@ -567,17 +621,9 @@ Position Streamline_walker::random_position(std::mt19937_64& gen, const std::vec
   const double a = u(gen) * cumulative_area.back();
   int f = static_cast<int>(std::upper_bound(cumulative_area.begin(), cumulative_area.end(), a) -
                            cumulative_area.begin());
-  f = std::min(f, static_cast<int>(faces.size()) - 1);
+  f = std::min(f, number_of_faces() - 1);
   const double r1 = std::sqrt(u(gen)), r2 = u(gen);
   return start_position(f, {1 - r1, r1 * (1 - r2), r1 * r2});
-}
-
-std::vector<double> Streamline_walker::cumulative_areas() const
-{
-  std::vector<double> c(faces.size());
-  double s = 0;
-  for(std::size_t f = 0; f < faces.size(); ++f) c[f] = s += mesh->face_area(static_cast<int>(f));
-  return c;
 }
 
 // The walks run without proximity test (single streamlines, fur, walks across the
@@ -585,9 +631,9 @@ std::vector<double> Streamline_walker::cumulative_areas() const
 template Walk Streamline_walker::walk(Position, const Walk_settings&, No_proximity&) const;
 template Walk Streamline_walker::walk(Position, const Walk_settings&, Separation_test&) const;
 template Streamline Streamline_walker::trace(const Position&, const Streamline_options&, double, No_proximity*,
-                                             No_proximity*, bool, std::vector<Segment_record>*) const;
+                                             No_proximity*, bool, std::vector<Segment_record>*, double) const;
 template Streamline Streamline_walker::trace(const Position&, const Streamline_options&, double, Separation_test*,
-                                             Separation_test*, bool, std::vector<Segment_record>*) const;
+                                             Separation_test*, bool, std::vector<Segment_record>*, double) const;
 
 } // namespace internal
 } // namespace Tangent_vector_fields

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <deque>
 #include <limits>
 #include <memory>
 #include <random>
@@ -116,6 +117,22 @@ struct No_proximity
   void record(const V3&, double, const V3&) {}
 };
 
+/// What every walk on one mesh needs whatever the field: the faces around each vertex, the
+/// boundary vertices, the bounding box and the cumulative face areas (for random seeds).
+/// O(faces) to make: a `Streamline_surface` keeps one for the tracers made per edit.
+struct Walker_surface
+{
+  explicit Walker_surface(std::shared_ptr<const Intrinsic_mesh> mesh);
+
+  std::shared_ptr<const Intrinsic_mesh> mesh;
+  std::vector<int> vertex_face_start, vertex_faces; // faces around each vertex (CSR)
+  std::vector<char> boundary_vertex;
+  double diagonal = 0;
+  V3 box_min{{0, 0, 0}};
+  double total_area = 0;
+  std::vector<double> cumulative_area; // sum of the areas of faces 0 ... f
+};
+
 /// \brief The field of one mesh prepared for walking, and the walk itself.
 ///
 /// The field has `n` vectors per face: a first one (`Face_data::direction`) and the
@@ -124,6 +141,11 @@ struct No_proximity
 /// branch is matched anew in each face it enters (`matching_branch`), after carrying the
 /// vector across the edge or the vertex it came through.  For `n = 1` the match is the
 /// face's only vector, so that vector fields and n-fields share every step of the walk.
+///
+/// The per-face data (2D layout, gradients, the field's vector) is made when a walk first
+/// needs a face (`face`), from the field's `Face_vector_source`: a walk reads only the faces
+/// it passes and their neighbours around the vertices it goes through.  Not thread-safe (the
+/// per-face data is filled in by const members).
 class Streamline_walker
 {
 public:
@@ -140,26 +162,46 @@ public:
   /// \throws Invalid_input for a wrong size, non-finite entries, `n < 1` or a vertex out of range.
   Streamline_walker(std::shared_ptr<const Intrinsic_mesh> mesh, const Eigen::VectorXd& field, int n,
                     const std::vector<int>& singular_vertices);
+  /// A field read face by face from `source` when a walk first needs the face;
+  /// `maximum_magnitude` is then the largest over the faces read so far.
+  /// \throws Invalid_input for a source of another number of faces, `n < 1` or a vertex out of
+  ///         range; later, when a face is read, for a non-finite vector.
+  Streamline_walker(std::shared_ptr<const Walker_surface> surface, std::shared_ptr<const Face_vector_source> source,
+                    int n, const std::vector<int>& singular_vertices);
 
+  std::shared_ptr<const Walker_surface> surface;
   std::shared_ptr<const Intrinsic_mesh> mesh;
+  std::shared_ptr<const Face_vector_source> source;
+  bool on_demand = false; // the field comes face by face (else it was given whole)
   int n = 1;
-  std::vector<Face_data> faces;
   std::vector<V2> turn; // (cos, sin) of 2 pi j / n
-  std::vector<int> vertex_face_start, vertex_faces; // faces around each vertex (CSR)
-  std::vector<char> boundary_vertex;
   std::vector<char> singular_vertex;
   std::vector<int> singular_list;
-  double maximum_magnitude = 0;
-  double diagonal = 0;
-  V3 box_min{{0, 0, 0}};
-  double total_area = 0;
+  // Largest magnitude of the face vectors: of all faces for a whole field, of the faces read
+  // so far for a field on demand.
+  mutable double maximum_magnitude = 0;
+
+  int number_of_faces() const { return static_cast<int>(slot_.size()); }
+  /// The data of face `f`, made on first use.
+  const Face_data& face(int f) const
+  {
+    const int s = slot_[f];
+    return s >= 0 ? pool_[s] : load(f);
+  }
+  /// Tells a field on demand that face `f` may be needed soon (nothing if it is read already).
+  void hint(int f) const
+  {
+    if(on_demand && slot_[f] < 0) source->will_need(f);
+  }
+  /// Faces whose data was made (each read once from the source).
+  std::size_t faces_read() const { return pool_.size(); }
 
   double to_absolute(double value, Length_unit unit) const;
 
   // Vector `branch` of face `f`, at its length.
   V2 field_vector(int f, int branch) const
   {
-    const V2& u = faces[f].direction;
+    const V2& u = face(f).direction;
     if(branch == 0) return u;
     const V2& c = turn[branch];
     return {c[0] * u[0] - c[1] * u[1], c[1] * u[0] + c[0] * u[1]};
@@ -170,7 +212,7 @@ public:
   int matching_branch(int f, const V2& reference) const
   {
     if(n == 1) return 0;
-    const V2& u = faces[f].direction;
+    const V2& u = face(f).direction;
     const double angle = std::atan2(cross2(u, reference), dot2(u, reference));
     const int j = static_cast<int>(std::lround(angle * n / (2 * M_PI)));
     return ((j % n) + n) % n;
@@ -184,7 +226,8 @@ public:
   V3 unit_tangent(int f, int branch) const
   {
     const V2 u = field_vector(f, branch);
-    const double k = faces[f].magnitude > 0 ? 1 / faces[f].magnitude : 0;
+    const double m = face(f).magnitude;
+    const double k = m > 0 ? 1 / m : 0;
     return mesh->from_frame(f, k * u[0], k * u[1]);
   }
 
@@ -197,7 +240,7 @@ public:
   V2 direction(int f, int branch, const Walk_settings& s) const
   {
     const V2 v = field_vector(f, branch);
-    const double k = s.sign / faces[f].magnitude;
+    const double k = s.sign / face(f).magnitude;
     if(s.rotated) return {-k * v[1], k * v[0]};
     return {k * v[0], k * v[1]};
   }
@@ -214,7 +257,7 @@ public:
 
   V2 layout_of(int f, const Barycentric& b) const
   {
-    const Face_data& F = faces[f];
+    const Face_data& F = face(f);
     return {b[1] * F.corner[1][0] + b[2] * F.corner[2][0], b[2] * F.corner[2][1]};
   }
 
@@ -258,7 +301,8 @@ public:
   Walk walk(Position pos, const Walk_settings& s, Proximity& proximity) const;
 
   Position start_position(int face, const Barycentric& beta, int branch = 0) const;
-  Walk_settings settings(const Streamline_options& o, double sign) const;
+  // `zero_reference`: the magnitude the zero-field tolerance is relative to (< 0: `maximum_magnitude`).
+  Walk_settings settings(const Streamline_options& o, double sign, double zero_reference = -1) const;
 
   // Joins a backward and a forward walk from the same seed into one streamline
   // running along the field.
@@ -270,11 +314,11 @@ public:
   template <class Proximity>
   Streamline trace(const Position& start, const Streamline_options& o, double closure_tolerance,
                    Proximity* forward_proximity, Proximity* backward_proximity, bool keep_segments,
-                   std::vector<Segment_record>* segments) const;
+                   std::vector<Segment_record>* segments, double zero_reference = -1) const;
 
   // A random point of the surface, uniform by area.
   Position random_position(std::mt19937_64& gen, const std::vector<double>& cumulative_area) const;
-  std::vector<double> cumulative_areas() const;
+  const std::vector<double>& cumulative_areas() const { return surface->cumulative_area; }
 
 private:
   // A walk that ended where the field converges (a sink or a stall) in a face with a
@@ -282,6 +326,11 @@ private:
   // the face, unless that would pass the length limit.  `last_branch` is the branch of
   // the last segment.
   bool end_at_singular_vertex(Walk& w, Position& pos, int& last_branch, const Walk_settings& s) const;
+  void set_up(int n, const std::vector<int>& singular_vertices);
+  const Face_data& load(int f) const;
+
+  mutable std::vector<int> slot_;         // position of each face's data in pool_ (-1: not made)
+  mutable std::deque<Face_data> pool_;    // stable references while it grows
 };
 
 /// Evenly spaced streamlines (evenly_spaced_streamlines.cpp).

@@ -17,6 +17,7 @@
 #include <CGAL/Tangent_vector_fields/N_field_basis.h>
 #include <CGAL/Tangent_vector_fields/N_field_singularities.h>
 #include <CGAL/Tangent_vector_fields/N_field_spline_solver.h>
+#include <CGAL/Tangent_vector_fields/Reduced_face_vectors.h>
 #include <CGAL/Tangent_vector_fields/Reduced_spline_solver.h>
 #include <CGAL/Tangent_vector_fields/Streamline_tracer.h>
 #include <CGAL/Tangent_vector_fields/constraint_file_io.h>
@@ -93,6 +94,15 @@ struct Vector_kind
 
   std::shared_ptr<const Field_model> model;
   std::shared_ptr<const TVF::Eigenfield_basis> basis;
+
+  // Preview strokes through the reduced field face by face.
+  static constexpr bool has_preview = true;
+  std::shared_ptr<TVF::Reduced_face_vectors> face_vectors(int d) const
+  {
+    const std::shared_ptr<const TVF::Eigenfield_rows> rows = model->eigenfield_rows(d);
+    return rows ? std::make_shared<TVF::Reduced_face_vectors>(rows) : nullptr;
+  }
+  std::shared_ptr<const TVF::Streamline_surface> surface() const { return model->streamline_surface(); }
 
   int n() const { return 1; }
   int order() const { return 2; }
@@ -171,6 +181,11 @@ struct N_field_kind
 
   std::shared_ptr<const Field_model> model;
   std::shared_ptr<const TVF::N_field_basis> basis;
+
+  // No preview yet: its strokes would need the index of the vertices they reach.
+  static constexpr bool has_preview = false;
+  std::shared_ptr<TVF::Reduced_face_vectors> face_vectors(int) const { return nullptr; }
+  std::shared_ptr<const TVF::Streamline_surface> surface() const { return model->streamline_surface(); }
 
   const TVF::N_field_operators& operators() const { return basis->operators(); }
   int n() const { return basis->n(); }

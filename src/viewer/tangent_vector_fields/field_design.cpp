@@ -8,6 +8,7 @@
 #include "field_design.h"
 #include "design_traits.h"
 
+#include <CGAL/Tangent_vector_fields/Reduced_face_vectors.h>
 #include <CGAL/Tangent_vector_fields/Refining_spline_solver.h>
 
 #include <map>
@@ -17,6 +18,19 @@ namespace tvf_viewer {
 namespace {
 
 using namespace design_traits;
+
+// The fur of the page: its lengths and zero-field test relative to the largest magnitude at the
+// roots, which a field read face by face (the preview) knows too, so that the preview's strokes
+// are those of the field that follows.
+TVF::Fur_options fur_options(const Display_settings& display)
+{
+  TVF::Fur_options fur;
+  fur.number_of_strokes = display.strokes;
+  fur.length = display.length;
+  fur.scale_length_by_magnitude = true;
+  fur.magnitude_reference = TVF::Fur_options::Magnitude_reference::roots;
+  return fur;
+}
 
 // --- the design -------------------------------------------------------------------------------
 
@@ -216,14 +230,7 @@ public:
   std::vector<TVF::Streamline> lines(const Eigen::VectorXd& x, const Display_settings& display) const override
   {
     const TVF::Streamline_tracer tracer = kind_.tracer(x);
-    if(display.lines == "fur")
-    {
-      TVF::Fur_options fur;
-      fur.number_of_strokes = display.strokes;
-      fur.length = display.length;
-      fur.scale_length_by_magnitude = true;
-      return tracer.fur(fur);
-    }
+    if(display.lines == "fur") return tracer.fur(fur_options(display));
     TVF::Evenly_spaced_options even;
     even.separation = display.separation;
     return tracer.evenly_spaced(even);
@@ -231,6 +238,42 @@ public:
   std::vector<std::pair<int, int>> singularities(const Eigen::VectorXd& x) const override
   {
     return kind_.singularities(x);
+  }
+
+  bool preview(const Display_settings& display, Design_preview& out) override
+  {
+    if constexpr(!Kind::has_preview) return false;
+    else
+    {
+      if(display.lines != "fur") return false;
+      const int d = basis_size();
+      if(!preview_source_ || preview_size_ != d)
+      {
+        preview_source_.reset(); // its rows may go before the new ones are made
+        preview_size_ = d;
+        try
+        {
+          preview_source_ = kind_.face_vectors(d); // null while they are being made
+        }
+        catch(const std::exception&) // no memory for the rows: no preview, the field as before
+        {
+          return false;
+        }
+      }
+      if(!preview_source_) return false;
+      Clock::time_point start = Clock::now();
+      const typename Kind::Reduced& reduced = spline_->reduced();
+      const Eigen::VectorXd a = reduced.coefficients();
+      out.report = reduced.report();
+      out.solve_ms = milliseconds_since(start);
+      start = Clock::now();
+      preview_source_->set_coefficients(a);
+      const TVF::Streamline_tracer tracer(*kind_.surface(), preview_source_, 1);
+      out.strokes = tracer.fur(fur_options(display));
+      out.faces_read = preview_source_->faces_asked();
+      out.lines_ms = milliseconds_since(start);
+      return true;
+    }
   }
 
 private:
@@ -260,6 +303,8 @@ private:
   long state_ = 0;     // counts edits: the reduced and exact answers of one state are compared
   long reduced_state_ = -1;
   Eigen::VectorXd reduced_; // the last reduced answer, of `reduced_state_`
+  std::shared_ptr<TVF::Reduced_face_vectors> preview_source_; // vector fields: the reduced field face by face
+  int preview_size_ = 0;
 };
 
 } // namespace

@@ -50,6 +50,17 @@ struct Design_field
   double difference = -1, largest_angle = -1;
 };
 
+/// The strokes of the reduced answer traced through the faces they reach only, without the
+/// whole field: what the `preview` message sends before the `field`.
+struct Design_preview
+{
+  std::vector<TVF::Streamline> strokes;
+  TVF::Spline_report report; ///< of the reduced solver
+  double solve_ms = 0;       ///< the reduced coefficients (and the report)
+  double lines_ms = 0;       ///< the face vectors the strokes reach, and the strokes
+  std::size_t faces_read = 0;
+};
+
 class Field_design
 {
 public:
@@ -105,6 +116,12 @@ public:
   virtual bool has_scalar(const std::string& kind) const = 0;
   /// Fur (n-fields: strokes along every branch) or evenly spaced streamlines (every family).
   virtual std::vector<TVF::Streamline> lines(const Eigen::VectorXd& x, const Display_settings& display) const = 0;
+  /// Fur of the reduced answer of the current constraints through the faces it reaches only
+  /// (vector fields; the same strokes as `lines` of the reduced field, up to rounding).  False,
+  /// and `out` untouched, when there is none: a display other than fur, an n-field (not yet:
+  /// its strokes stop at singular vertices, whose index needs the field around them), or a
+  /// basis not ready.
+  virtual bool preview(const Display_settings& display, Design_preview& out) = 0;
   /// `(vertex, k)` of every vertex where the field has index `k / n != 0` (n-fields only).
   virtual std::vector<std::pair<int, int>> singularities(const Eigen::VectorXd& x) const = 0;
 };

@@ -72,6 +72,38 @@ void Field_session::poll(const Send& send, std::chrono::milliseconds timeout)
   }
 }
 
+namespace {
+
+// Float32, 6 per segment: its two 3D end points.
+std::vector<float> segments(const std::vector<TVF::Streamline>& strokes)
+{
+  std::vector<float> out;
+  for(const TVF::Streamline& s : strokes)
+    for(std::size_t i = 0; i + 1 < s.points.size(); ++i)
+      for(const auto& p : {s.points[i], s.points[i + 1]})
+        for(int k = 0; k < 3; ++k) out.push_back(static_cast<float>(p[k]));
+  return out;
+}
+
+} // namespace
+
+void Field_session::send_preview(Request& r)
+{
+  Design_preview preview;
+  if(!design_->preview(display_, preview)) return;
+  const Clock::time_point start = Clock::now();
+  const std::vector<float> lines = segments(preview.strokes);
+  const double lines_ms = preview.lines_ms + milliseconds_since(start);
+  std::string members = "\"type\":\"preview\"" + r.echo() + ",\"n\":" + std::to_string(design_->n()) +
+                        ",\"basis_size\":" + std::to_string(design_->basis_size()) +
+                        ",\"report\":{\"error_bound\":" + number(preview.report.error_bound) +
+                        "},\"faces_read\":" + std::to_string(preview.faces_read) +
+                        ",\"timings\":{\"solve_ms\":" + short_number(r.reduced_ms + preview.solve_ms) +
+                        ",\"lines_ms\":" + short_number(lines_ms);
+  members += ",\"server_ms\":" + short_number(milliseconds_since(r.received)) + "}";
+  (*r.send)(binary_message(members, {{"lines", true, lines.data(), lines.size()}}));
+}
+
 void Field_session::send_field(Request& r, bool refined)
 {
   if(!refined)
@@ -81,6 +113,7 @@ void Field_session::send_field(Request& r, bool refined)
     last_edit_.id = r.id;
     last_edit_.received = r.received;
   }
+  if(!refined) send_preview(r);
   Design_field field = design_->field();
   awaiting_exact_ = !field.exact; // with exact answers on, `poll` sends the exact one when ready
   const double solve_ms = r.reduced_ms + field.solve_ms;
@@ -111,10 +144,7 @@ void Field_session::send_field(Request& r, bool refined)
   if(display_.lines != "none")
   {
     start = Clock::now();
-    for(const TVF::Streamline& s : design_->lines(x, display_))
-      for(std::size_t i = 0; i + 1 < s.points.size(); ++i)
-        for(const auto& p : {s.points[i], s.points[i + 1]})
-          for(int k = 0; k < 3; ++k) lines.push_back(static_cast<float>(p[k]));
+    lines = segments(design_->lines(x, display_));
     arrays.push_back({"lines", true, lines.data(), lines.size()});
     lines_ms = milliseconds_since(start);
   }

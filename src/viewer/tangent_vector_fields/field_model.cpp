@@ -10,10 +10,14 @@
 #include <CGAL/Tangent_vector_fields/Hodge_solver.h>
 #include <CGAL/Tangent_vector_fields/N_field_basis.h>
 #include <CGAL/Tangent_vector_fields/N_field_operators.h>
+#include <CGAL/Tangent_vector_fields/Reduced_face_vectors.h>
+#include <CGAL/Tangent_vector_fields/Streamline_tracer.h>
 
 #include <thread>
 
+#include <algorithm>
 #include <cstdint>
+#include <future>
 #include <vector>
 
 namespace tvf_viewer {
@@ -198,6 +202,45 @@ const Outgoing& Field_model::mesh_message() const
                               {"boundary_edges", false, boundary.data(), boundary.size()}}));
   });
   return *mesh_message_;
+}
+
+std::shared_ptr<const TVF::Streamline_surface> Field_model::streamline_surface() const
+{
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if(surface_) return surface_;
+  }
+  auto surface = std::make_shared<const TVF::Streamline_surface>(matrices_->shared_mesh());
+  std::lock_guard<std::mutex> lock(mutex_);
+  if(!surface_) surface_ = std::move(surface);
+  return surface_;
+}
+
+std::shared_ptr<const TVF::Eigenfield_rows> Field_model::eigenfield_rows(int d) const
+{
+  const std::shared_ptr<const TVF::Eigenfield_basis> b = basis();
+  if(!b) return nullptr;
+  std::lock_guard<std::mutex> lock(rows_mutex_);
+  Rows_slot& slot = rows_[d];
+  if(std::shared_ptr<const TVF::Eigenfield_rows> rows = slot.rows.lock()) return rows;
+  auto make = [b, d] { return std::make_shared<const TVF::Eigenfield_rows>(b, d); };
+  const double bytes = 8.0 * matrices_->mesh().number_of_faces() * std::max(d, 0); // 2 nf d float32
+  if(!slot.job.valid())
+  {
+    if(bytes < 64e6)
+    {
+      std::shared_ptr<const TVF::Eigenfield_rows> rows = make();
+      slot.rows = rows;
+      return rows;
+    }
+    slot.job = std::async(std::launch::async, make).share();
+  }
+  if(slot.job.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return nullptr;
+  const std::shared_future<std::shared_ptr<const TVF::Eigenfield_rows>> job = slot.job;
+  slot.job = {};
+  std::shared_ptr<const TVF::Eigenfield_rows> rows = job.get(); // rethrows what the job threw
+  slot.rows = rows;
+  return rows;
 }
 
 } // namespace tvf_viewer

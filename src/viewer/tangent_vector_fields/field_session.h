@@ -19,6 +19,7 @@
 #include <condition_variable>
 #include <cstddef>
 #include <functional>
+#include <future>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -27,7 +28,9 @@
 namespace CGAL {
 namespace Tangent_vector_fields {
 class Eigenfield_basis;
+class Eigenfield_rows;
 class Hodge_solver;
+class Streamline_surface;
 class N_field_basis;
 class N_field_operators;
 } // namespace Tangent_vector_fields
@@ -95,6 +98,14 @@ public:
   const Field_limits& limits() const { return limits_; }
   /// The binary `mesh` message (made once).
   const Outgoing& mesh_message() const;
+  /// What streamline tracers of the mesh share (made once, on first use).
+  std::shared_ptr<const TVF::Streamline_surface> streamline_surface() const;
+  /// The basis' first `d` eigenfields face by face (float32), for preview strokes through the
+  /// faces they reach only (`2 nf d` floats, as much memory as those eigenfunctions in double),
+  /// kept while a session of that size holds them.  Made on first request: at once if they take
+  /// less than 64 MB, else by a background job (seconds at 346k faces), and null until it is
+  /// done (the sessions send no preview meanwhile).  Null until the basis is ready.
+  std::shared_ptr<const TVF::Eigenfield_rows> eigenfield_rows(int d) const;
 
 private:
   std::shared_ptr<const TVF::Operator_matrices> matrices_;
@@ -116,6 +127,14 @@ private:
   N_field_basis_source n_field_source_;
   mutable std::unique_ptr<Outgoing> mesh_message_;
   mutable std::once_flag mesh_once_;
+  mutable std::shared_ptr<const TVF::Streamline_surface> surface_;   // guarded by mutex_
+  struct Rows_slot
+  {
+    std::weak_ptr<const TVF::Eigenfield_rows> rows;
+    std::shared_future<std::shared_ptr<const TVF::Eigenfield_rows>> job; // valid while being made
+  };
+  mutable std::map<int, Rows_slot> rows_; // by d, guarded by rows_mutex_
+  mutable std::mutex rows_mutex_;
 };
 
 /// One page's editing session: its design (vector field or n-field), its display, and the
@@ -163,7 +182,9 @@ private:
 
   void require_ready(const Request& request) const;
   std::string info_json() const;
+  /// Sends the field (first, unless `refined`, the `preview` strokes where the design has them).
   void send_field(Request& request, bool refined = false);
+  void send_preview(Request& request);
 
   std::shared_ptr<const Field_model> model_;
   std::string kind_;

@@ -12,6 +12,7 @@
 #include <CGAL/Tangent_vector_fields/Discrete_operators.h>
 #include <CGAL/Tangent_vector_fields/Eigenfield_basis.h>
 #include <CGAL/Tangent_vector_fields/Full_spline_solver.h>
+#include <CGAL/Tangent_vector_fields/Reduced_face_vectors.h>
 #include <CGAL/Tangent_vector_fields/Reduced_spline_solver.h>
 #include <CGAL/Tangent_vector_fields/Soft_field_design.h>
 #include <CGAL/Tangent_vector_fields/Vector_field_spline.h>
@@ -54,6 +55,42 @@ TEST(Spline, ConstraintsMetReducedAndFullOnSphereAndTorus)
     EXPECT_EQ(full.harmonic_dimension(), 2 * genus);
     EXPECT_EQ(full.report().undetermined_harmonic, 0);
     EXPECT_TRUE(full.report().warnings.empty()) << full.report().warnings.front();
+  }
+}
+
+// The reduced field face by face (the editor's preview) against the whole field U a of the basis
+// (the truth): every face, in double within rounding, in float32 within float32 rounding, on a
+// torus (harmonic, exact and coexact elements) with a basis size that cuts a type short.
+TEST(Spline, ReducedFaceVectorsAreTheWholeReducedField)
+{
+  const Mesh mesh = make_torus(16, 10);
+  Design_setup s = setup(mesh, 120);
+  TVF::Reduced_spline_solver reduced(s.basis, 75);
+  reduced.add(mixed_constraints(s.ops->mesh(), 6, 3));
+  const Eigen::VectorXd a = reduced.coefficients(), x = reduced.field();
+  const double largest = x.cwiseAbs().maxCoeff();
+  ASSERT_GT(largest, 0);
+  for(const auto precision : {TVF::Eigenfunction_precision::float64, TVF::Eigenfunction_precision::float32})
+  {
+    const auto rows = std::make_shared<const TVF::Eigenfield_rows>(s.basis, 75, precision);
+    EXPECT_EQ(rows->number_of_faces(), s.nf);
+    TVF::Reduced_face_vectors field(rows);
+    field.set_coefficients(a);
+    const double tolerance = precision == TVF::Eigenfunction_precision::float64 ? 1e-12 : 1e-6;
+    double worst = 0;
+    for(int f = 0; f < s.nf; ++f)
+    {
+      const std::array<double, 2> v = field.face_vector(f);
+      worst = std::max({worst, std::abs(v[0] - x[2 * f]), std::abs(v[1] - x[2 * f + 1])});
+    }
+    EXPECT_LE(worst, tolerance * largest) << (precision == TVF::Eigenfunction_precision::float64 ? "f64" : "f32");
+    EXPECT_EQ(field.faces_asked(), static_cast<std::size_t>(s.nf));
+    // Fewer coefficients: the first elements only, as Eigenfield_basis::field.
+    field.set_coefficients(a.head(10));
+    const Eigen::VectorXd x10 = s.basis->field(a.head(10));
+    EXPECT_NEAR(field.face_vector(5)[1], x10[11], tolerance * x10.cwiseAbs().maxCoeff() + 1e-300);
+    EXPECT_EQ(field.faces_asked(), 1u);
+    EXPECT_THROW(field.set_coefficients(Eigen::VectorXd::Ones(76)), TVF::Invalid_input);
   }
 }
 

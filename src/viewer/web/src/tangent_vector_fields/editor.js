@@ -58,6 +58,7 @@ export class Editor {
   }
 
   onBinary(header, arrays, bytes, arrivedAt) {
+    if (header.type === 'preview') return this.onPreview(arrays);
     if (header.type !== 'field') return;
     if (header.refined) return this.onExact(header, arrays, arrivedAt);
     const entry = this.queue.matches(header.request);
@@ -99,6 +100,14 @@ export class Editor {
         exact_transfer_ms: arrivedAt - sentAt - (header.timings?.server_ms ?? 0) });
     }
     this.ui.field(header);
+  }
+
+  // The strokes of the reduced answer, sent before its field: drawn at once over the last
+  // field's colours; the field that follows replaces them.
+  onPreview(arrays) {
+    if (!this.mesh || this.display.lines !== 'fur') return;
+    this.viewer.setLines(arrays.lines, this.display.colour === 'magnitude', true);
+    this.viewer.renderNow();
   }
 
   // Colours and lines of the last field, as the display asks.
