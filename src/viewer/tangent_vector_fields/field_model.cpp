@@ -20,6 +20,8 @@
 #include <future>
 #include <vector>
 
+#include <unistd.h> // sysconf: the machine's memory
+
 namespace tvf_viewer {
 
 // --- the model ----------------------------------------------------------------------------------
@@ -225,6 +227,10 @@ std::shared_ptr<const TVF::Eigenfield_rows> Field_model::eigenfield_rows(int d) 
   if(std::shared_ptr<const TVF::Eigenfield_rows> rows = slot.rows.lock()) return rows;
   auto make = [b, d] { return std::make_shared<const TVF::Eigenfield_rows>(b, d); };
   const double bytes = 8.0 * matrices_->mesh().number_of_faces() * std::max(d, 0); // 2 nf d float32
+  // The rows double the basis' memory (2.8 GB for the armadillo's 346k faces at d = 1000): past a
+  // quarter of the machine's memory there is no preview, only the field.
+  static const double memory = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
+  if(memory > 0 && bytes > memory / 4) return nullptr;
   if(!slot.job.valid())
   {
     if(bytes < 64e6)
