@@ -8,6 +8,7 @@
 /// The field `U a` of a reduced spline face by face (rows `2f, 2f+1`), for streamline tracers
 /// that read only the faces their strokes reach (`Face_vector_source`).
 
+#include <CGAL/Model_reduction/internal/huge_pages.h>
 #include <CGAL/Tangent_vector_fields/Eigenfield_basis.h>
 #include <CGAL/Tangent_vector_fields/Streamline_tracer.h>
 
@@ -70,9 +71,9 @@ private:
   std::shared_ptr<const Eigenfield_basis> basis_;
   int d_ = 0, nf_ = 0;
   Eigenfunction_precision precision_;
-  void* data_ = nullptr;
+  std::unique_ptr<Model_reduction::internal::Mapped_array<float>> rows32_; // one of the two
+  std::unique_ptr<Model_reduction::internal::Mapped_array<double>> rows64_;
   std::size_t bytes_ = 0;
-  bool mapped_ = false;
 };
 
 /// \brief The field `U a` of a reduced vector-field spline (`Reduced_spline_solver`), face by

@@ -9,14 +9,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
-#include <new>
 #include <string>
 #include <vector>
 
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
 
 namespace CGAL {
 namespace Tangent_vector_fields {
@@ -28,24 +23,13 @@ Eigenfield_rows::Eigenfield_rows(std::shared_ptr<const Eigenfield_basis> basis, 
   d_ = internal::checked_basis_size(*basis_, d);
   nf_ = basis_->operators().mesh().number_of_faces();
   const bool single = precision_ == Eigenfunction_precision::float32;
-  bytes_ = std::size_t(2) * nf_ * d_ * (single ? sizeof(float) : sizeof(double));
-  if(bytes_ > 0)
-  {
-#if defined(__linux__)
-    data_ = mmap(nullptr, bytes_, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-    if(data_ != MAP_FAILED)
-    {
-      mapped_ = true;
-#if defined(MADV_HUGEPAGE)
-      madvise(data_, bytes_, MADV_HUGEPAGE); // a hint, before the first write: failure is harmless
-#endif
-    }
-    else
-      data_ = nullptr;
-#endif
-    if(!data_) data_ = std::malloc(bytes_);
-    if(!data_) throw std::bad_alloc();
-  }
+  const std::size_t count = std::size_t(2) * nf_ * d_;
+  bytes_ = count * (single ? sizeof(float) : sizeof(double));
+  // Mapped from the system with 2 MB pages where granted (a face read in random order then costs
+  // no page walk), and given back at once when the rows go.
+  if(single) rows32_ = std::make_unique<Model_reduction::internal::Mapped_array<float>>(count);
+  else rows64_ = std::make_unique<Model_reduction::internal::Mapped_array<double>>(count);
+  void* const data = single ? static_cast<void*>(rows32_->data()) : static_cast<void*>(rows64_->data());
   // The eigenfields of each type a block of eigenfunctions at a time (as Eigenfield_basis::decompress
   // makes them: G phi / sqrt(lambda), J G* psi / sqrt(mu), the harmonic fields), each written into
   // the faces' blocks at its position k in the basis: face f holds row 2f, then row 2f + 1.
@@ -65,8 +49,8 @@ Eigenfield_rows::Eigenfield_rows(std::shared_ptr<const Eigenfield_basis> basis, 
       for(Eigen::Index q = 0; q < fields.cols(); ++q)
       {
         if(positions[q] < 0) continue;
-        if(single) static_cast<float*>(data_)[r * d_ + positions[q]] = static_cast<float>(fields(r, q));
-        else static_cast<double*>(data_)[r * d_ + positions[q]] = fields(r, q);
+        if(single) static_cast<float*>(data)[r * d_ + positions[q]] = static_cast<float>(fields(r, q));
+        else static_cast<double*>(data)[r * d_ + positions[q]] = fields(r, q);
       }
   };
   const Eigen::Index step = 64;
@@ -92,22 +76,13 @@ Eigenfield_rows::Eigenfield_rows(std::shared_ptr<const Eigenfield_basis> basis, 
       store(basis_->harmonic_fields().col(basis_->index_in_type(k)), std::vector<int>{k});
 }
 
-Eigenfield_rows::~Eigenfield_rows()
-{
-#if defined(__linux__)
-  if(mapped_)
-  {
-    munmap(data_, bytes_);
-    return;
-  }
-#endif
-  std::free(data_);
-}
+Eigenfield_rows::~Eigenfield_rows() = default;
 
 const void* Eigenfield_rows::block(int f) const
 {
   const std::size_t entry = precision_ == Eigenfunction_precision::float32 ? sizeof(float) : sizeof(double);
-  return static_cast<const char*>(data_) + std::size_t(2) * f * d_ * entry;
+  const void* data = rows32_ ? static_cast<const void*>(rows32_->data()) : static_cast<const void*>(rows64_->data());
+  return static_cast<const char*>(data) + std::size_t(2) * f * d_ * entry;
 }
 
 void Eigenfield_rows::prefetch(int f) const
