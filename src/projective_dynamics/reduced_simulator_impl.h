@@ -86,8 +86,9 @@ struct Reduced_simulator::Impl : internal::Scene_handles
   Eigen::LLT<Eigen::MatrixXd> Mr_llt;
   // (U^T M U)^-1, for the floor's pushes: times the sparse rows of U it costs O(k nnz) per push
   // instead of the O(k^2 c) of solving with c dense rows (armadillo drop, 22.8k tets, k = 600:
-  // the contact was 89 of 106 ms per step).
-  Eigen::MatrixXd Mr_inverse;
+  // contact 96-104 -> 44-47 ms per step).  Made at the first push (O(k^3)): a scene without a
+  // floor never pays for it.
+  mutable Eigen::MatrixXd Mr_inverse;
   Eigen::VectorXd gvec; // U^T m
   std::vector<internal::Reduced_group> groups;
   // Hyper-reduction: the sampled elements' rows on the used vertices.
@@ -136,7 +137,7 @@ struct Reduced_simulator::Impl : internal::Scene_handles
     if(Mr_llt.info() != Eigen::Success)
       throw Numerical_failure("U^T M U is not positive definite: the basis has dependent columns on the massive vertices "
                               "(a sample's support too small or flat: fewer samples or a larger radius multiplier)");
-    Mr_inverse = Mr_llt.solve(Eigen::MatrixXd::Identity(k(), k()));
+    Mr_inverse.resize(0, 0); // of the masses before
     gvec = Ut * m;
     a = rest_coordinates ? *rest_coordinates : Eigen::MatrixXd(Mr_llt.solve(Ut * m.asDiagonal() * model.rest_positions()));
     if(!rest_coordinates)
@@ -356,6 +357,7 @@ struct Reduced_simulator::Impl : internal::Scene_handles
             for(Sparse::InnerIterator it(U, c[q]); it; ++it) entries.emplace_back(int(q), int(it.col()), it.value());
           Uc.setFromTriplets(entries.begin(), entries.end());
         }
+        if(Mr_inverse.rows() != k()) Mr_inverse = Mr_llt.solve(Eigen::MatrixXd::Identity(k(), k()));
         const Eigen::MatrixXd Y = Mr_inverse * Eigen::SparseMatrix<double>(Uc.transpose());
         Eigen::MatrixXd G = Uc * Y;
         // A relative 1e-10 on the diagonal: more penetrating vertices than the subspace can

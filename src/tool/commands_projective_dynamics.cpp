@@ -20,6 +20,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 #include <type_traits>
 #include <vector>
 
@@ -94,11 +95,7 @@ Body read_body(const std::string& path, const Command_line& command)
                                          command.get<double>("bending"))),
                 triangles, false, int(triangles.size()));
   }
-  catch(const MR::Invalid_input& e)
-  {
-    throw Tool_error("'" + path + "': " + one_line(e.what()));
-  }
-  catch(const MR::Invalid_mesh& e)
+  catch(const std::invalid_argument& e) // Invalid_input or Invalid_mesh
   {
     throw Tool_error("'" + path + "': " + one_line(e.what()));
   }
