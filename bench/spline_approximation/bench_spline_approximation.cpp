@@ -14,7 +14,7 @@
 //
 // Usage: bench_spline_approximation [--sizes 1000,10000,...] [--rms 0.002] [--max-error 0.005]
 //                                   [--noise 0.0005] [--sweep-size 2000] [--tables 1234]
-//                                   [--algorithms penalty,greedy] [--help]
+//                                   [--algorithms penalty,greedy] [--coarse-start-above 4096] [--help]
 
 #include <CGAL/Spline_approximation/Spline_fit.h>
 
@@ -50,9 +50,12 @@ double seconds_since(std::chrono::steady_clock::time_point t0)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+std::size_t coarse_start_above = SA::Fit_options().coarse_start_above;
+
 SA::Fit_options options(int k, SA::Fit_algorithm a)
 {
   SA::Fit_options o;
+  o.coarse_start_above = coarse_start_above;
   o.degree = k;
   o.algorithm = a;
   return o;
@@ -127,6 +130,7 @@ int main(int argc, char** argv)
     if(std::string(argv[i]) == "--help") {
       std::printf("bench_spline_approximation [--sizes 1000,10000,100000,1000000] [--rms 0.002] [--max-error 0.005]\n"
                   "  [--noise 0.0005] [--sweep-size 2000] [--tables 1234] [--algorithms penalty,greedy]\n"
+                  "  [--coarse-start-above 4096] (the heuristics' coarse-to-fine start past this many candidates)\n"
                   "tables: 1 cubic within an RMS bound against uniform knots, 2 degree 1 within a max error against\n"
                   "Douglas-Peucker, 3 gap to the exact optimum, 4 lambda sweep; algorithms: the heuristics run in 1, 2, 4\n");
       return 0;
@@ -140,6 +144,7 @@ int main(int argc, char** argv)
     else if(a == "--sweep-size") sweep_size = Eigen::Index(std::atoll(v.c_str()));
     else if(a == "--tables") tables = v;
     else if(a == "--algorithms") algorithm_names = v;
+    else if(a == "--coarse-start-above") coarse_start_above = std::size_t(std::atoll(v.c_str()));
     else { std::fprintf(stderr, "unknown option %s\n", a.c_str()); return 2; }
   }
   std::printf("curves: noisy rose, noise sigma %g per coordinate; candidates: every sample\n\n", noise);
