@@ -61,18 +61,38 @@ void kth_derivative_on_spans(const Eigen::VectorXd& U, int k, Eigen::Index i, do
 
 } // namespace
 
+// Column by column with the row's entries in registers: Eigen's row expressions on a
+// column-major matrix of 2 or 3 columns cost more than the arithmetic (these two products are
+// most of a least-squares fit on a million samples).
 Eigen::MatrixXd Band_rows::times(const Eigen::MatrixXd& X) const
 {
-  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(rows(), X.cols());
-  for(Eigen::Index r = 0; r < rows(); ++r)
-    for(Eigen::Index q = 0; q < values.cols(); ++q) out.row(r) += values(r, q) * X.row(column(r, q));
+  Eigen::MatrixXd out(rows(), X.cols());
+  const Eigen::Index w = values.cols();
+  for(Eigen::Index c = 0; c < X.cols(); ++c) {
+    const double* x = X.col(c).data();
+    double* o = out.col(c).data();
+    for(Eigen::Index r = 0; r < rows(); ++r) {
+      double sum = 0;
+      if(wrap > 0) for(Eigen::Index q = 0; q < w; ++q) sum += values(r, q) * x[column(r, q)];
+      else for(Eigen::Index q = 0; q < w; ++q) sum += values(r, q) * x[first[r] + q];
+      o[r] = sum;
+    }
+  }
   return out;
 }
 
 void Band_rows::add_transpose_times(const Eigen::MatrixXd& Y, double w, Eigen::MatrixXd& out) const
 {
-  for(Eigen::Index r = 0; r < rows(); ++r)
-    for(Eigen::Index q = 0; q < values.cols(); ++q) out.row(column(r, q)) += (w * values(r, q)) * Y.row(r);
+  const Eigen::Index width = values.cols();
+  for(Eigen::Index c = 0; c < Y.cols(); ++c) {
+    const double* y = Y.col(c).data();
+    double* o = out.col(c).data();
+    for(Eigen::Index r = 0; r < rows(); ++r) {
+      const double wy = w * y[r];
+      if(wrap > 0) for(Eigen::Index q = 0; q < width; ++q) o[column(r, q)] += values(r, q) * wy;
+      else for(Eigen::Index q = 0; q < width; ++q) o[first[r] + q] += values(r, q) * wy;
+    }
+  }
 }
 
 Eigen::VectorXd clamped_knots(const Eigen::VectorXd& interior, int degree)
@@ -110,6 +130,17 @@ Basis make_basis(const Eigen::VectorXd& knots, int degree, bool closed)
   return b;
 }
 
+Eigen::Index Basis_at::operator()(double t, double* N)
+{
+  const int k = b_.degree;
+  int steps = 0; // a few steps at most, so that jumping parameters cost a search, not a walk
+  if(s_ >= 0 && t >= b_.U[s_])
+    while(steps < 8 && s_ < last_span_ && t >= b_.U[s_ + 1]) ++s_, ++steps;
+  if(s_ < 0 || t < b_.U[s_] || (s_ < last_span_ && t >= b_.U[s_ + 1])) s_ = find_span(b_.U, k, t);
+  basis_functions(b_.U, k, s_, t, N);
+  return s_ - k;
+}
+
 Band_rows design_rows(const Basis& b, const Eigen::VectorXd& t)
 {
   const int k = b.degree;
@@ -118,10 +149,9 @@ Band_rows design_rows(const Basis& b, const Eigen::VectorXd& t)
   A.first.resize(t.size());
   A.values.resize(t.size(), k + 1);
   double N[4];
+  Basis_at basis(b);
   for(Eigen::Index j = 0; j < t.size(); ++j) {
-    const Eigen::Index s = find_span(b.U, k, t[j]);
-    basis_functions(b.U, k, s, t[j], N);
-    A.first[j] = int(s - k);
+    A.first[j] = int(basis(t[j], N));
     for(int q = 0; q <= k; ++q) A.values(j, q) = N[q];
   }
   return A;

@@ -21,7 +21,7 @@ Spline_fit greedy_removal(const Problem& p, const Goal& goal, const std::vector<
   std::vector<std::size_t> kept(static_cast<std::size_t>(p.candidates.size()));
   std::iota(kept.begin(), kept.end(), std::size_t(0));
   if(start) kept = *start;
-  Spline_fit fit = finish(p, kept, goal.lambda);
+  Spline_fit fit = finish(p, kept, goal.lambda, Sample_errors::summary_only);
   if(goal.is_bound() && !goal.met(fit)) return fit; // removing knots cannot help
   std::size_t batch = std::max<std::size_t>(1, kept.size() / 8);
   std::size_t tried_singles = 0; // at batch 1, the next few ranked knots are tried before giving up
@@ -48,7 +48,7 @@ Spline_fit greedy_removal(const Problem& p, const Goal& goal, const std::vector<
     if(chosen == 0) break;
     std::vector<std::size_t> trial_kept;
     for(std::size_t i = 0; i < kept.size(); ++i) if(!out[i]) trial_kept.push_back(kept[i]);
-    Spline_fit trial = finish(p, trial_kept, goal.lambda);
+    Spline_fit trial = finish(p, trial_kept, goal.lambda, Sample_errors::summary_only);
     const bool accept = goal.is_bound() ? goal.met(trial) : trial.objective < fit.objective;
     if(accept) {
       kept = std::move(trial_kept);

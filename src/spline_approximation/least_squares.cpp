@@ -9,6 +9,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <tuple>
 
 namespace CGAL {
 namespace Spline_approximation {
@@ -125,19 +127,70 @@ Eigen::MatrixXd Spd_matrix::solve(const Eigen::MatrixXd& B) const
   return sparse_->ldlt.solve(B);
 }
 
-Spline_fit finish(const Problem& p, const std::vector<std::size_t>& kept, double lambda)
+namespace {
+
+// The normal equations A^T A X = A^T P of an open curve's fit, each sample's basis functions
+// computed in registers and used at once: no n x (k + 1) design matrix, whose allocation (its
+// page faults included) cost as much as the arithmetic on a million samples.
+void open_normal_equations(const Basis& basis, const Eigen::VectorXd& t, const Eigen::MatrixXd& P, Spd_matrix& AtA,
+                           Eigen::MatrixXd& AtP)
+{
+  const int k = basis.degree;
+  Banded_spd& band = AtA.band();
+  Basis_at at(basis);
+  double N[4];
+  for(Eigen::Index j = 0; j < t.size(); ++j) {
+    const Eigen::Index first = at(t[j], N);
+    for(int a = 0; a <= k; ++a) {
+      for(int b = 0; b <= a; ++b) band.at(first + a, first + b) += N[a] * N[b];
+      for(Eigen::Index c = 0; c < P.cols(); ++c) AtP(first + a, c) += N[a] * P(j, c);
+    }
+  }
+}
+
+// Per sample, the distance between the sample and the spline at its parameter, into `errors`
+// when it is not null; returns the largest and the sum of squares.
+std::pair<double, double> open_errors(const Basis& basis, const Eigen::VectorXd& t, const Eigen::MatrixXd& P,
+                                      const Eigen::MatrixXd& X, Eigen::VectorXd* errors)
+{
+  const int k = basis.degree;
+  Basis_at at(basis);
+  double N[4], largest = 0, sum = 0;
+  for(Eigen::Index j = 0; j < t.size(); ++j) {
+    const Eigen::Index first = at(t[j], N);
+    double squared = 0;
+    for(Eigen::Index c = 0; c < P.cols(); ++c) {
+      double value = -P(j, c);
+      for(int a = 0; a <= k; ++a) value += N[a] * X(first + a, c);
+      squared += value * value;
+    }
+    sum += squared;
+    largest = std::max(largest, squared);
+    if(errors) (*errors)[j] = std::sqrt(squared);
+  }
+  return {std::sqrt(largest), sum};
+}
+
+} // namespace
+
+Spline_fit finish(const Problem& p, const std::vector<std::size_t>& kept, double lambda, Sample_errors detail)
 {
   const Eigen::MatrixXd& P = *p.samples;
   const int k = p.degree;
   Eigen::VectorXd interior(kept.size());
   for(std::size_t i = 0; i < kept.size(); ++i) interior[Eigen::Index(i)] = p.candidates[Eigen::Index(kept[i])];
   const Basis basis = make_basis(interior, k, p.closed);
-  const Band_rows A = design_rows(basis, p.t);
   const Eigen::Index n_ctrl = basis.controls;
   Spd_matrix AtA(n_ctrl, k + 1, p.closed);
-  AtA.add_gram(A, 1.0);
   Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(n_ctrl, P.cols());
-  A.add_transpose_times(P, 1.0, rhs);
+  std::optional<Band_rows> A; // closed curves: wrapped columns, through the general rows
+  if(p.closed) {
+    A = design_rows(basis, p.t);
+    AtA.add_gram(*A, 1.0);
+    A->add_transpose_times(P, 1.0, rhs);
+  } else {
+    open_normal_equations(basis, p.t, P, AtA, rhs);
+  }
   // A pivot below 1e-12 of its diagonal means the knots leave (nearly) a direction without
   // samples (Schoenberg-Whitney fails): then add 1e-10 |J X|^2 at the kept knots, whose kernel
   // (single polynomials) the samples do determine, so the minimiser is unique and keeps its
@@ -154,13 +207,21 @@ Spline_fit finish(const Problem& p, const std::vector<std::size_t>& kept, double
   fit.spline.closed = p.closed;
   fit.spline.knots = p.closed ? interior : basis.U; // closed: the knots on the circle
   fit.spline.control_points = M.solve(rhs);
-  fit.parameters = p.t;
-  fit.candidates = p.candidates;
-  fit.kept = kept;
-  fit.errors = (A.times(fit.spline.control_points) - P).rowwise().norm();
-  fit.squared_error = fit.errors.squaredNorm();
-  fit.max_error = fit.errors.size() ? fit.errors.maxCoeff() : 0.0;
-  fit.rms_error = std::sqrt(fit.squared_error / double(std::max<Eigen::Index>(1, fit.errors.size())));
+  fit.kept = kept; // parameters and candidates are filled in once, by the entry points (n each)
+  // A trial fit of the algorithms needs the largest and total error only: the n errors (a fresh
+  // allocation each time, page faults included) are kept for the answers.
+  const bool keep = detail == Sample_errors::kept;
+  if(p.closed) {
+    fit.errors = (A->times(fit.spline.control_points) - P).rowwise().norm();
+    fit.squared_error = fit.errors.squaredNorm();
+    fit.max_error = fit.errors.size() ? fit.errors.maxCoeff() : 0.0;
+    if(!keep) fit.errors.resize(0);
+  } else {
+    if(keep) fit.errors.resize(p.t.size());
+    std::tie(fit.max_error, fit.squared_error) =
+        open_errors(basis, p.t, P, fit.spline.control_points, keep ? &fit.errors : nullptr);
+  }
+  fit.rms_error = std::sqrt(fit.squared_error / double(std::max<Eigen::Index>(1, p.t.size())));
   fit.objective = fit.squared_error + lambda * double(kept.size());
   return fit;
 }

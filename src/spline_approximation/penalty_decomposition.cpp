@@ -111,15 +111,6 @@ Spline_fit penalty_decomposition_stage(const Problem& p, double lambda)
   return greedy_removal(p, goal, &out);
 }
 
-// The problem restricted to the candidates `kept` (increasing indices into p.candidates).
-Problem restricted(const Problem& p, const std::vector<std::size_t>& kept)
-{
-  Problem q = p;
-  q.candidates.resize(Eigen::Index(kept.size()));
-  for(std::size_t i = 0; i < kept.size(); ++i) q.candidates[Eigen::Index(i)] = p.candidates[Eigen::Index(kept[i])];
-  return q;
-}
-
 // Where the continuation starts.  A stage's first beta is at least 1e-6 max diag(A^T A), so its
 // first threshold is at most lambda_s / that; below the median squared jump of the full
 // least-squares fit times that beta, the first stage keeps about half the candidates or more

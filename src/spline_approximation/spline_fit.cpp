@@ -70,6 +70,60 @@ Spline_fit penalty_decomposition_within(const internal::Problem& p, const intern
   return internal::greedy_removal(p, goal, &best.kept);
 }
 
+// Exact data whose knot falls inside a short span of the coarse start is fitted within the
+// bound by a cluster of knots around it, which the removal cannot trade for the one knot the
+// start lacks.  The answer's knots, joined by every candidate of the start's spans next to
+// them where those are short (the start refined there, at most `short_span` candidates): a
+// second start, on which the fit puts its jump where the data has it.
+std::vector<std::size_t> densified_around(const std::vector<std::size_t>& answer, const std::vector<std::size_t>& start,
+                                          std::size_t N, bool closed)
+{
+  constexpr long long short_span = 64;
+  std::vector<char> in(N, 0);
+  for(std::size_t a : answer) in[a] = 1;
+  const long long n = (long long)N, m = (long long)start.size();
+  for(std::size_t a : answer) {
+    const long long pos = std::lower_bound(start.begin(), start.end(), a) - start.begin();
+    const long long left = pos > 0 ? (long long)start[pos - 1] : (closed ? (long long)start[m - 1] - n : -1);
+    const long long right = pos + 1 < m ? (long long)start[pos + 1] : (closed ? (long long)start[0] + n : n);
+    for(long long side = 0; side < 2; ++side) {
+      const long long lo = side == 0 ? left : (long long)a, hi = side == 0 ? (long long)a : right;
+      if(hi - lo <= short_span)
+        for(long long c = lo + 1; c < hi; ++c) in[std::size_t(((c % n) + n) % n)] = 1;
+    }
+  }
+  std::vector<std::size_t> out;
+  for(std::size_t c = 0; c < N; ++c) if(in[c]) out.push_back(c);
+  return out;
+}
+
+// A heuristic on the candidates of `p`, or, past `coarse_start_above` candidates, on those of
+// the coarse-to-fine start (the answer's `kept` mapped back to p's candidates), then on the
+// answer densified where the start was fine (exact knots), the better of the two; where the
+// bound is still missed, on every candidate.
+Spline_fit heuristic_fit(const internal::Problem& p, const internal::Goal& goal, const Fit_options& options)
+{
+  auto run = [&](const internal::Problem& q) {
+    if(options.algorithm == Fit_algorithm::greedy_removal) return internal::greedy_removal(q, goal);
+    return goal.is_bound() ? penalty_decomposition_within(q, goal) : internal::penalty_decomposition(q, goal.lambda);
+  };
+  auto run_from = [&](const std::vector<std::size_t>& start) {
+    Spline_fit fit = run(internal::restricted(p, start));
+    for(std::size_t& i : fit.kept) i = start[i];
+    return fit;
+  };
+  if(std::size_t(p.candidates.size()) <= options.coarse_start_above) return run(p);
+  const std::vector<std::size_t> start = internal::coarse_start(p, goal, 0.5);
+  Spline_fit fit = run_from(start);
+  const std::vector<std::size_t> dense = densified_around(fit.kept, start, std::size_t(p.candidates.size()), p.closed);
+  if(dense.size() > fit.kept.size()) {
+    Spline_fit from_dense = run_from(dense);
+    if(internal::better(from_dense, fit, goal)) fit = std::move(from_dense);
+  }
+  if(goal.is_bound() && !goal.met(fit)) return run(p);
+  return fit;
+}
+
 } // namespace
 
 const char* algorithm_name(Fit_algorithm a)
@@ -158,10 +212,8 @@ Spline_fit fit_spline(const Eigen::MatrixXd& samples, const Eigen::VectorXd& par
   Spline_fit fit;
   switch(options.algorithm) {
   case Fit_algorithm::penalty_decomposition:
-    fit = goal.is_bound() ? penalty_decomposition_within(p, goal) : internal::penalty_decomposition(p, goal.lambda);
-    break;
   case Fit_algorithm::greedy_removal:
-    fit = internal::greedy_removal(p, goal);
+    fit = heuristic_fit(p, goal, options);
     break;
   case Fit_algorithm::dynamic_programming:
     if(options.degree != 1)
@@ -182,6 +234,9 @@ Spline_fit fit_spline(const Eigen::MatrixXd& samples, const Eigen::VectorXd& par
     fit = internal::brute_force(p, goal);
     break;
   }
+  if(fit.errors.size() != n) fit = internal::finish(p, fit.kept, goal.lambda); // the errors of every sample
+  fit.parameters = p.t;
+  fit.candidates = p.candidates;
   fit.algorithm = options.algorithm;
   fit.within_bound = goal.met(fit);
   fit.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -210,7 +265,10 @@ Spline_fit least_squares_spline(const Eigen::MatrixXd& samples, const Eigen::Vec
   p.closed = closed;
   std::vector<std::size_t> all(std::size_t(interior_knots.size()));
   for(std::size_t i = 0; i < all.size(); ++i) all[i] = i;
-  return internal::finish(p, all, 0);
+  Spline_fit fit = internal::finish(p, all, 0);
+  fit.parameters = p.t;
+  fit.candidates = p.candidates;
+  return fit;
 }
 
 } // namespace Spline_approximation

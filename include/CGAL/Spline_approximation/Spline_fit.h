@@ -49,6 +49,12 @@ struct Fit_options
   /// 0: every interior sample parameter is a candidate knot; g > 0: the uniform grid `i / (g + 1)`, i = 1..g.
   /// Closed curves: every sample parameter (0 included), or the grid `i / g`, i = 0..g-1.
   std::size_t candidate_grid_size = 0;
+  /// The heuristics (penalty decomposition, greedy removal) on more candidates than this start
+  /// from a coarse-to-fine knot set instead of every candidate: a few knots, each span halved
+  /// while its samples miss half the bound (or, with a penalty, while its squared error
+  /// exceeds lambda / 4).  Cost O(n log n) instead of O(n) fits of n knots; the knots of data
+  /// that is exactly a spline on a few candidates are still found.  0: always; `SIZE_MAX`: never.
+  std::size_t coarse_start_above = 4096;
   /// Fit a closed curve: the last sample joins the first (do not repeat it), chord length
   /// includes that closing segment, and the spline is periodic (`B_spline::closed`).  Penalty
   /// decomposition, greedy removal and brute force; the dynamic programming refuses it.

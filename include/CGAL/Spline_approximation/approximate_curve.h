@@ -48,6 +48,7 @@ Eigen::MatrixXd points_to_matrix(const PointRange& points)
 ///   \cgalParamNBegin{rms_error_bound} the fewest knots within this root-mean-square distance (> 0); `double` \cgalParamNEnd
 ///   \cgalParamNBegin{fit_algorithm} `Fit_algorithm`; default `penalty_decomposition` \cgalParamNEnd
 ///   \cgalParamNBegin{candidate_grid_size} 0: every point's parameter is a candidate knot; g: a uniform grid of g; `std::size_t`; default 0 \cgalParamNEnd
+///   \cgalParamNBegin{coarse_start_above} above this many candidates the heuristics start from a coarse-to-fine knot set (`Fit_options::coarse_start_above`); `std::size_t`; default 4096 \cgalParamNEnd
 ///   \cgalParamNBegin{closed_curve} the last point joins the first (not repeated); a periodic spline; `bool`; default false \cgalParamNEnd
 ///   \cgalParamNBegin{curve_parameters} one strictly increasing parameter per point; `std::vector<double>`; default chord length \cgalParamNEnd
 /// \cgalNamedParamsEnd
@@ -62,6 +63,7 @@ Spline_fit approximate_curve(const PointRange& points, const NamedParameters& np
   o.degree = choose_parameter(get_parameter(np, internal_np::spline_degree), 3);
   o.algorithm = choose_parameter(get_parameter(np, internal_np::fit_algorithm), Fit_algorithm::penalty_decomposition);
   o.candidate_grid_size = choose_parameter(get_parameter(np, internal_np::candidate_grid_size), std::size_t(0));
+  o.coarse_start_above = choose_parameter(get_parameter(np, internal_np::coarse_start_above), o.coarse_start_above);
   o.closed_curve = choose_parameter(get_parameter(np, internal_np::closed_curve), false);
   if constexpr(!is_default_parameter<NamedParameters, internal_np::knot_penalty_t>::value)
     o.penalty = double(get_parameter(np, internal_np::knot_penalty));

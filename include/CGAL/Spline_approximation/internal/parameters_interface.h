@@ -19,3 +19,5 @@ MR_add_named_parameter(rms_error_bound_t, rms_error_bound, rms_error_bound)
 // How: the algorithm, and the candidate knots (0: every sample parameter; g: a uniform grid of g)
 MR_add_named_parameter(fit_algorithm_t, fit_algorithm, fit_algorithm)
 MR_add_named_parameter(candidate_grid_size_t, candidate_grid_size, candidate_grid_size)
+// Above how many candidates the heuristics start from a coarse-to-fine knot set
+MR_add_named_parameter(coarse_start_above_t, coarse_start_above, coarse_start_above)

@@ -50,7 +50,21 @@ struct Basis
 Basis make_basis(const Eigen::VectorXd& knots, int degree, bool closed);
 // The clamped knot vector of `interior` knots for `degree`.
 Eigen::VectorXd clamped_knots(const Eigen::VectorXd& interior, int degree);
-// Rows of the design matrix A: A(j, i) = N_i(t_j); t must be non-decreasing (in [0, 1) if closed).
+// The k + 1 basis functions nonzero at one parameter after another: increasing parameters
+// (every fit's) walk the spans in order, others are searched for.
+class Basis_at
+{
+public:
+  explicit Basis_at(const Basis& b) : b_(b), last_span_(b.U.size() - b.degree - 2) {}
+  // N_{s-k}(t) .. N_s(t) into N[0..k]; returns s - k, the column of N[0] (modulo the number of
+  // control points of a closed basis).
+  Eigen::Index operator()(double t, double* N);
+
+private:
+  const Basis& b_;
+  Eigen::Index last_span_, s_ = -1;
+};
+// Rows of the design matrix A: A(j, i) = N_i(t_j) (t in [0, 1) if closed).
 Band_rows design_rows(const Basis& b, const Eigen::VectorXd& t);
 // One row per knot: the jump of the degree-th derivative there, scaled to unit norm
 // (removing the knot is exactly asking the row times X to vanish; the scale makes the
@@ -91,6 +105,7 @@ public:
   double max_diagonal() const;
   bool factor(double relative_pivot);
   Eigen::MatrixXd solve(const Eigen::MatrixXd& B) const;
+  Banded_spd& band() { return band_; } // the matrix of an open curve (not cyclic)
 
 private:
   struct Cyclic; // the sparse matrix and its factor
@@ -121,12 +136,22 @@ struct Goal
   }
 };
 
-// The least-squares fit on the kept candidates, with its errors (the finish of every algorithm).
-Spline_fit finish(const Problem& p, const std::vector<std::size_t>& kept, double lambda);
+// The least-squares fit on the kept candidates, with its errors (the finish of every algorithm):
+// the max and total always, the error of every sample when `kept` (the entry points fill them
+// in for the answer if an algorithm's trial fit did not).
+enum class Sample_errors { kept, summary_only };
+Spline_fit finish(const Problem& p, const std::vector<std::size_t>& kept, double lambda,
+                  Sample_errors detail = Sample_errors::kept);
 
 // Strictly better for the goal: penalty mode by objective; bound mode by meeting the bound,
 // then fewer knots, then smaller squared error.
 bool better(const Spline_fit& a, const Spline_fit& b, const Goal& goal);
+
+// The problem restricted to the candidates `kept` (increasing indices into p.candidates).
+Problem restricted(const Problem& p, const std::vector<std::size_t>& kept);
+// A start for the heuristics on many candidates: knots refined coarse to fine until every span
+// meets the goal tightened by `margin` (coarse_start.cpp).
+std::vector<std::size_t> coarse_start(const Problem& p, const Goal& goal, double margin);
 
 // The algorithms (each returns a finished fit).
 Spline_fit penalty_decomposition(const Problem& p, double lambda);
