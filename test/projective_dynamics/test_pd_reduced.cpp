@@ -40,32 +40,18 @@ namespace params = PD::parameters;
 
 namespace {
 
+using pd_test::jittered;
+using pd_test::squared_distance_to_rotations;
+
 using pd_test::box_model;
 using pd_test::small_box;
 using pd_test::small_hyper;
-
-PD::Positions jittered(const PD::Positions& x, double amount, std::mt19937& rng)
-{
-  std::uniform_real_distribution<double> u(-amount, amount);
-  PD::Positions y = x;
-  for(Eigen::Index i = 0; i < y.size(); ++i) y.data()[i] += u(rng);
-  return y;
-}
 
 double m_norm2(const PD::Positions& d, const Eigen::VectorXd& m)
 {
   double s = 0;
   for(Eigen::Index i = 0; i < d.rows(); ++i) s += m[i] * d.row(i).squaredNorm();
   return s;
-}
-
-// dist^2(F, SO(3)) from the signed singular values via the eigenvalues of F^T F.
-double squared_distance_to_rotations(const Eigen::Matrix3d& F)
-{
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(F.transpose() * F);
-  Eigen::Vector3d s = eig.eigenvalues().cwiseMax(0).cwiseSqrt();
-  if(F.determinant() < 0) s[0] = -s[0];
-  return (s - Eigen::Vector3d::Ones()).squaredNorm();
 }
 
 } // namespace

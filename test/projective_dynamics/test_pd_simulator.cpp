@@ -28,24 +28,8 @@ namespace params = PD::parameters;
 
 namespace {
 
-PD::Positions jittered(const PD::Positions& x, double amount, std::mt19937& rng)
-{
-  std::uniform_real_distribution<double> u(-amount, amount);
-  PD::Positions y = x;
-  for(Eigen::Index i = 0; i < y.size(); ++i) y.data()[i] += u(rng);
-  return y;
-}
-
-// Squared distance of F to SO(3) from the signed singular values, these from the eigenvalues
-// of F^T F (not the package's SVD): min_R |F - R|^2 = sum (s_i - 1)^2, the smallest s_i
-// carrying the sign of det F.
-double squared_distance_to_rotations(const Eigen::Matrix3d& F)
-{
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(F.transpose() * F);
-  Eigen::Vector3d s = eig.eigenvalues().cwiseMax(0).cwiseSqrt(); // increasing
-  if(F.determinant() < 0) s[0] = -s[0];
-  return (s - Eigen::Vector3d::Ones()).squaredNorm();
-}
+using pd_test::jittered;
+using pd_test::squared_distance_to_rotations;
 
 // g(q) = 1/(2h^2) |q - s|_M^2 + sum_tets k V/2 dist^2(F, SO(3)) + sum_springs (k/L)/2 dist^2(d, [L rmin, L rmax]),
 // everything recomputed from the mesh: F = Ds Dm^-1 from the positions.

@@ -13,6 +13,7 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <utility>
@@ -89,6 +90,31 @@ inline Mesh make_dumbbell(double c = 1.6, double neck = 0.25, int around = 16, i
       triangles.push_back({at(i, k), at(i + 1, k + 1), at(i + 1, k)});
     }
   return make_mesh(points, triangles);
+}
+
+/// A closed shell without symmetries (so that eigenvalues are simple).
+inline Mesh lumpy_sphere(int levels = 2)
+{
+  Mesh mesh = make_icosphere(levels);
+  jitter_vertices(mesh, 0.15, 21);
+  return mesh;
+}
+
+/// sin of the largest principal angle between the column spans of A and B (of equal rank) in
+/// the inner product of the diagonal mass m.
+inline double largest_angle_sine(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B, const Eigen::VectorXd& m)
+{
+  auto orthonormal = [&](const Eigen::MatrixXd& X) {
+    const Eigen::MatrixXd G = X.transpose() * m.asDiagonal() * X;
+    const Eigen::MatrixXd L = G.llt().matrixL();
+    return Eigen::MatrixXd(X * L.transpose().inverse());
+  };
+  const Eigen::MatrixXd QA = orthonormal(A), QB = orthonormal(B);
+  const Eigen::MatrixXd residual = QA - QB * (QB.transpose() * m.asDiagonal() * QA);
+  return std::sqrt(std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(
+                                         residual.transpose() * m.asDiagonal() * residual)
+                                         .eigenvalues()
+                                         .maxCoeff()));
 }
 
 } // namespace shell_test

@@ -21,27 +21,9 @@ namespace VM = CGAL::Vibration_modes;
 
 namespace {
 
-Mesh lumpy_sphere(int levels = 2)
-{
-  Mesh mesh = make_icosphere(levels);
-  jitter_vertices(mesh, 0.15, 21);
-  return mesh;
-}
-
 VM::Mode_problem shell_problem(const Mesh& mesh)
 {
   return VM::shell_mode_problem(DS::Shell_energy(DS::stacked_positions(mesh), triangles_of(mesh), {1, 1, 0.01}));
-}
-
-double largest_angle_sine(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B, const Eigen::VectorXd& m)
-{
-  const Eigen::MatrixXd MA = m.asDiagonal() * A;
-  const Eigen::MatrixXd P = A * (A.transpose() * MA).inverse() * MA.transpose(); // M-projector onto span A
-  const Eigen::MatrixXd residual = B - P * B;                                   // B assumed M-orthonormal
-  return std::sqrt(std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(
-                                         residual.transpose() * m.asDiagonal() * residual)
-                                         .eigenvalues()
-                                         .maxCoeff()));
 }
 
 // A sparsity weight on the scale of the problem: the k-th eigenvalue over the l1 norm of a

@@ -34,13 +34,6 @@ namespace {
 
 const DS::Shell_stiffness stiffness{1, 1, 0.01};
 
-Mesh lumpy_sphere(int levels)
-{
-  Mesh mesh = make_icosphere(levels);
-  jitter_vertices(mesh, 0.15, 21);
-  return mesh;
-}
-
 VM::Mode_problem problem_of(const Mesh& mesh, const std::vector<int>& pinned = {})
 {
   return VM::shell_mode_problem(DS::Shell_energy(DS::stacked_positions(mesh), triangles_of(mesh), stiffness), pinned);

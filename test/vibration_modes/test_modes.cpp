@@ -30,35 +30,11 @@ DS::Shell_energy shell_of(const Mesh& mesh, DS::Shell_stiffness k = {1, 1, 0.01}
   return DS::Shell_energy(DS::stacked_positions(mesh), triangles_of(mesh), k);
 }
 
-// A closed shell without symmetries (so that eigenvalues are simple).
-Mesh lumpy_sphere()
-{
-  Mesh mesh = make_icosphere(2);
-  jitter_vertices(mesh, 0.15, 21);
-  return mesh;
-}
-
 std::string failure_of(const VM::Mode_problem& p, int count)
 {
   try { VM::lowest_vibration_modes(p, count); }
   catch(const std::exception& e) { return e.what(); }
   return "solved";
-}
-
-// sin of the largest principal angle between the column spans of A and B in the M inner product.
-double largest_angle_sine(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B, const Eigen::VectorXd& m)
-{
-  auto orthonormal = [&](const Eigen::MatrixXd& X) {
-    const Eigen::MatrixXd G = X.transpose() * m.asDiagonal() * X;
-    const Eigen::MatrixXd L = G.llt().matrixL();
-    return Eigen::MatrixXd(X * L.transpose().inverse());
-  };
-  const Eigen::MatrixXd QA = orthonormal(A), QB = orthonormal(B);
-  const Eigen::MatrixXd residual = QA - QB * (QB.transpose() * m.asDiagonal() * QA);
-  return std::sqrt(std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(
-                                         residual.transpose() * m.asDiagonal() * residual)
-                                         .eigenvalues()
-                                         .maxCoeff()));
 }
 
 } // namespace

@@ -47,8 +47,9 @@ std::string expect_error(const std::function<void()>& f, const std::string& phra
   return "";
 }
 
-/// Expects `Invalid_mesh` with `defect` and `phrase` in the message.
-inline void expect_defect(TVF::Mesh_defect defect, const std::function<void()>& f, const std::string& phrase = "")
+/// Expects `Invalid_mesh` with `defect` and `phrase` in the message, and a message that says
+/// more than a word; returns the message.
+inline std::string expect_defect(TVF::Mesh_defect defect, const std::function<void()>& f, const std::string& phrase = "")
 {
   const std::string what = expect_error<TVF::Invalid_mesh>(
       [&] {
@@ -63,6 +64,15 @@ inline void expect_defect(TVF::Mesh_defect defect, const std::function<void()>& 
         }
       },
       phrase);
+  EXPECT_GT(what.size(), 10u) << what;
+  return what;
+}
+
+/// A face vector property map named "f:<name>", every value `value`.
+inline Mesh::Property_map<Face_index, Vector_3> field_map(Mesh& mesh, const std::string& name,
+                                                        const Vector_3& value = Vector_3(0, 0, 0))
+{
+  return mesh.add_property_map<Face_index, Vector_3>("f:" + name, value).first;
 }
 
 inline bool all_finite(const Eigen::VectorXd& x) { return x.allFinite(); }

@@ -24,11 +24,6 @@ namespace {
 typedef TVF::Spectral_basis<Mesh> Basis;
 typedef Mesh::Property_map<Face_index, Vector_3> Field;
 
-Field field_map(Mesh& mesh, const std::string& name, const Vector_3& value = Vector_3(0, 0, 0))
-{
-  return mesh.add_property_map<Face_index, Vector_3>("f:" + name, value).first;
-}
-
 // The basis is right for the topology counted on the mesh: harmonic count 2g + b - 1
 // per component with boundary (2g closed), eigenvalues finite, >= 0 and ascending,
 // eigenfields finite and MX-orthonormal.

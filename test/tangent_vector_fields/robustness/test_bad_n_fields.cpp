@@ -22,7 +22,7 @@ using namespace bad_input;
 namespace {
 
 typedef Mesh::Property_map<Face_index, Vector_3> Field;
-typedef TVF::N_field_constraint Constraint;
+typedef TVF::N_field_constraint N_constraint;
 
 std::shared_ptr<const TVF::N_field_operators> n_ops(const Mesh& mesh, int n,
                                                     const std::vector<std::pair<int, int>>& singularities = {})
@@ -204,27 +204,27 @@ TEST(BadNFields, BadConstraintsAreRefusedAndDuplicatesAreInfeasible)
   TVF::Full_n_field_spline_solver solver(ops);
   const double nan = std::nan("");
   const auto& normal = ops->mesh().normal(2);
-  const std::vector<std::pair<Constraint, std::string>> bad = {
-      {Constraint::vector_in_face(80, {1, 0, 0}), "in face 80\" (n = 4): no such face"},
-      {Constraint::vector_in_face(-1, {1, 0, 0}), "in face -1\" (n = 4): no such face"},
-      {Constraint::direction_in_face(2, {0, 0, 0}), "the direction is zero"},
-      {Constraint::vector_in_face(2, {nan, 0, 0}), "the vector is not finite"},
-      {Constraint::vector_in_face(2, {normal[0], normal[1], normal[2]}), "normal"},
-      {Constraint::vector_at_point(2, {0.7, 0.7, -0.4}, {1, 0, 0}), "barycentric"},
-      {Constraint::singularity_at_vertex(42, 1), "at vertex 42\" (n = 4): no such vertex"},
+  const std::vector<std::pair<N_constraint, std::string>> bad = {
+      {N_constraint::vector_in_face(80, {1, 0, 0}), "in face 80\" (n = 4): no such face"},
+      {N_constraint::vector_in_face(-1, {1, 0, 0}), "in face -1\" (n = 4): no such face"},
+      {N_constraint::direction_in_face(2, {0, 0, 0}), "the direction is zero"},
+      {N_constraint::vector_in_face(2, {nan, 0, 0}), "the vector is not finite"},
+      {N_constraint::vector_in_face(2, {normal[0], normal[1], normal[2]}), "normal"},
+      {N_constraint::vector_at_point(2, {0.7, 0.7, -0.4}, {1, 0, 0}), "barycentric"},
+      {N_constraint::singularity_at_vertex(42, 1), "at vertex 42\" (n = 4): no such vertex"},
       // Index 100/4 around a vertex of 5 faces turns by more than pi per face.
-      {Constraint::singularity_at_vertex(0, 100), "its 5 faces cannot show a turning of 100 periods"},
+      {N_constraint::singularity_at_vertex(0, 100), "its 5 faces cannot show a turning of 100 periods"},
   };
   for(const auto& [c, phrase] : bad)
     expect_error<TVF::Invalid_input>([&] { solver.add(c); }, phrase);
   EXPECT_EQ(solver.number_of_constraints(), 0);
   // A zero vector is valid: the n-field vanishes in that face.
-  solver.add(Constraint::vector_in_face(30, {0, 0, 0}));
+  solver.add(N_constraint::vector_in_face(30, {0, 0, 0}));
   // The same vector twice, and two vectors 1e-14 apart: dependent rows.
   const std::array<double, 3> v = {0.3, 0.5, -0.2}, w = {0.3 * (1 + 1e-14), 0.5, -0.2};
-  solver.add(Constraint::vector_in_face(9, v));
-  expect_error<TVF::Infeasible_constraints>([&] { solver.add(Constraint::vector_in_face(9, v)); }, "depends on");
-  expect_error<TVF::Infeasible_constraints>([&] { solver.add(Constraint::vector_in_face(9, w)); }, "depends on");
+  solver.add(N_constraint::vector_in_face(9, v));
+  expect_error<TVF::Infeasible_constraints>([&] { solver.add(N_constraint::vector_in_face(9, v)); }, "depends on");
+  expect_error<TVF::Infeasible_constraints>([&] { solver.add(N_constraint::vector_in_face(9, w)); }, "depends on");
   EXPECT_EQ(solver.number_of_constraints(), 2);
   const Eigen::VectorXd z = solver.field();
   ASSERT_TRUE(z.allFinite());

@@ -5,6 +5,7 @@
 // triangles, mollification, vertices in no face, field files.  Soups that need
 // repair are in test/model_reduction/test_mesh_repair.cpp, every mesh of CGAL's data tree in test_data_tree.cpp.
 
+#include "bad_input_support.h"
 #include "expect_reason.h"
 #include "hodge_checks.h"
 #include "test_meshes.h"
@@ -28,29 +29,10 @@ using namespace tvf_test;
 
 namespace {
 
+using bad_input::expect_defect;
+using bad_input::field_map;
+
 typedef Mesh::Property_map<Face_index, Vector_3> Field;
-
-Field field_map(Mesh& mesh, const std::string& name, const Vector_3& value = Vector_3(0, 0, 0))
-{
-  return mesh.add_property_map<Face_index, Vector_3>("f:" + name, value).first;
-}
-
-// Expects `f` to throw Invalid_mesh with `defect`; returns the message.
-std::string expect_defect(TVF::Mesh_defect defect, const std::function<void()>& f)
-{
-  try
-  {
-    f();
-  }
-  catch(const TVF::Invalid_mesh& e)
-  {
-    EXPECT_EQ(static_cast<int>(e.defect()), static_cast<int>(defect)) << e.what();
-    EXPECT_GT(std::string(e.what()).size(), 10u);
-    return e.what();
-  }
-  ADD_FAILURE() << "no Invalid_mesh thrown";
-  return "";
-}
 
 // A fan of triangles around vertex 0 with one triangle squeezed: vertex 2 moves
 // to a fraction `t` of the way from vertex 1 towards vertex 3 on a circle, making
