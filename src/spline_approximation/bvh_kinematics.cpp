@@ -77,6 +77,7 @@ std::vector<double> euler_angles(const Eigen::Quaterniond& r, const std::vector<
 
 Eigen::MatrixXd joint_positions(const Bvh_motion& motion)
 {
+  check_bvh_motion(motion, "joint positions");
   const std::size_t n = motion.joints.size();
   Eigen::MatrixXd P(motion.number_of_frames(), Eigen::Index(3 * n));
   std::vector<Eigen::Quaterniond> rotation(n);

@@ -6,6 +6,7 @@
 
 #include <CGAL/Spline_approximation/Bvh_motion.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -116,8 +117,10 @@ private:
   }
 
   // After ROOT or JOINT (or End Site when `end_site`): name, '{', OFFSET, CHANNELS, children, '}'.
-  void read_joint(Bvh_motion& m, int parent, bool end_site = false)
+  void read_joint(Bvh_motion& m, int parent, bool end_site = false, int depth = 0)
   {
+    if(depth > max_depth) // real skeletons are a few dozen deep; a hostile file must not exhaust the stack
+      fail(words_[pos_ - 1], "joints nested deeper than " + std::to_string(max_depth) + " levels");
     Bvh_joint joint;
     joint.parent = parent;
     joint.end_site = end_site;
@@ -139,11 +142,11 @@ private:
     m.joints.push_back(joint);
     while(true) {
       if(pos_ < words_.size() && words_[pos_].text == "}") { next(); return; }
-      if(!end_site && at_keyword("JOINT")) { next(); read_joint(m, index); continue; }
+      if(!end_site && at_keyword("JOINT")) { next(); read_joint(m, index, false, depth + 1); continue; }
       if(!end_site && at_keyword("End")) {
         next();
         expect("Site", "'End Site'");
-        read_joint(m, index, true);
+        read_joint(m, index, true, depth + 1);
         continue;
       }
       fail(peek_or_end(), "expected " + std::string(end_site ? "'}' to close the End Site" : "JOINT, End Site or '}' in joint '" +
@@ -173,11 +176,13 @@ private:
     }
   }
 
-  // One frame per line, every channel's value on it.
+  // One frame per line, every channel's value on it.  The values are gathered before the matrix is
+  // made: a declared count is not trusted with memory before the lines are there.
   void read_frames(Bvh_motion& m, Eigen::Index count, const Word& frames_word)
   {
     const std::size_t channels = m.number_of_channels();
-    m.frames.resize(count, Eigen::Index(channels));
+    std::vector<double> values;
+    values.reserve(std::min(std::size_t(count) * channels, words_.size() - pos_));
     Eigen::Index f = 0;
     while(pos_ < words_.size()) {
       const std::size_t line = words_[pos_].line;
@@ -190,7 +195,7 @@ private:
         if(c >= channels)
           fail(w, "frame " + std::to_string(f + 1) + " has more than the " + std::to_string(channels) +
                       " values of the skeleton's channels");
-        m.frames(f, Eigen::Index(c)) = number(w);
+        values.push_back(number(w));
       }
       if(c < channels) {
         Word at = words_[pos_ - 1];
@@ -203,8 +208,11 @@ private:
     if(f < count)
       fail(frames_word, std::to_string(count) + " frames declared but the file holds " + std::to_string(f) +
                             " frame lines");
+    m.frames = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+        values.data(), count, Eigen::Index(channels));
   }
 
+  static constexpr int max_depth = 1000;
   std::string name_;
   std::vector<Word> words_;
   std::size_t pos_ = 0, end_line_ = 1;
@@ -262,6 +270,33 @@ std::size_t Bvh_motion::number_of_named_joints() const
   return n;
 }
 
+void check_bvh_motion(const Bvh_motion& motion, const std::string& caller)
+{
+  std::size_t column = 0;
+  for(std::size_t j = 0; j < motion.joints.size(); ++j) {
+    const Bvh_joint& joint = motion.joints[j];
+    const std::string which = caller + ": joint " + std::to_string(j) + " ('" + joint.name + "')";
+    if(joint.parent >= int(j) || joint.parent < -1) throw Invalid_input(which + ": its parent must come before it");
+    if(joint.parent >= 0 && motion.joints[std::size_t(joint.parent)].end_site)
+      throw Invalid_input(which + ": an End Site has no children");
+    if(joint.end_site && (!joint.channels.empty() || joint.parent < 0))
+      throw Invalid_input(which + ": an End Site has a parent and no channels");
+    if(!joint.end_site && joint.name.empty()) throw Invalid_input(which + ": a joint needs a name");
+    if(joint.first_channel != column)
+      throw Invalid_input(which + ": its first channel is column " + std::to_string(joint.first_channel) + ", not " +
+                          std::to_string(column) + " (the channels follow the joints' order)");
+    if(joint.channels.size() > 6 || !joint.offset.allFinite())
+      throw Invalid_input(which + ": at most 6 channels and a finite offset");
+    column += joint.channels.size();
+  }
+  if(motion.frames.cols() != Eigen::Index(column))
+    throw Invalid_input(caller + ": the frames have " + std::to_string(motion.frames.cols()) + " columns for " +
+                        std::to_string(column) + " channels");
+  if(!motion.frames.allFinite()) throw Invalid_input(caller + ": a frame holds a NaN or infinite value");
+  if(!(motion.frame_time > 0) || !std::isfinite(motion.frame_time))
+    throw Invalid_input(caller + ": the frame time must be finite and > 0");
+}
+
 Bvh_motion read_bvh(std::istream& in, const std::string& source_name)
 {
   return Bvh_reader(in, source_name).read();
@@ -276,11 +311,7 @@ Bvh_motion read_bvh(const std::string& path)
 
 void write_bvh(std::ostream& out, const Bvh_motion& motion, int significant_digits)
 {
-  if(motion.frames.cols() != Eigen::Index(motion.number_of_channels()))
-    throw Invalid_input("write_bvh: the frames have " + std::to_string(motion.frames.cols()) + " columns for " +
-                        std::to_string(motion.number_of_channels()) + " channels");
-  if(!motion.frames.allFinite()) throw Invalid_input("write_bvh: a frame holds a NaN or infinite value");
-  if(!(motion.frame_time > 0)) throw Invalid_input("write_bvh: the frame time must be > 0");
+  check_bvh_motion(motion, "write_bvh");
   const int digits = std::max(1, std::min(17, significant_digits));
   const std::string format = "%." + std::to_string(digits) + "g";
   out << "HIERARCHY\n";

@@ -59,8 +59,7 @@ void check_options(const Bvh_motion& motion, const Motion_options& o)
     throw Invalid_input("compress_motion: the motion has " + std::to_string(motion.number_of_frames()) +
                         " frames; a spline of degree " + std::to_string(o.degree) + " needs at least " +
                         std::to_string(o.degree + 1));
-  if(motion.frames.cols() != Eigen::Index(motion.number_of_channels()) || !motion.frames.allFinite())
-    throw Invalid_input("compress_motion: the frames must hold one finite value per channel");
+  check_bvh_motion(motion, "compress_motion");
   if(o.representation == Rotation_representation::quaternion)
     for(const Bvh_joint& j : motion.joints) {
       const std::vector<std::size_t> r = columns_of(j, true);

@@ -65,6 +65,12 @@ struct Bvh_motion
   std::size_t number_of_named_joints() const;
 };
 
+/// Checks that `motion` is well formed: every parent before its child, End Sites with a parent,
+/// no channels and no children, `first_channel` running through the channels in joint order, at
+/// most 6 channels, finite offsets, one column of finite values per channel, a finite frame time > 0.
+/// \throws Invalid_input naming `caller` and the joint otherwise.
+void check_bvh_motion(const Bvh_motion& motion, const std::string& caller = "BVH motion");
+
 /// Reads a BVH text.
 /// \param source_name the name used in error messages (the file's path)
 /// \throws Invalid_input with `'<source_name>' line L, column C: <reason>` for: a missing or
@@ -78,7 +84,7 @@ Bvh_motion read_bvh(const std::string& path);
 
 /// Writes `motion` as BVH text, every number with `significant_digits` digits (9 reproduces
 /// what a float holds and reads back to the same text; 17 reproduces every double exactly).
-/// \throws Invalid_input when `frames` does not have one column per channel or holds a non-finite value.
+/// \throws Invalid_input as `check_bvh_motion`.
 void write_bvh(std::ostream& out, const Bvh_motion& motion, int significant_digits = 9);
 /// Writes a BVH file.  \throws Invalid_input as above, and when the file cannot be written.
 void write_bvh(const std::string& path, const Bvh_motion& motion, int significant_digits = 9);
@@ -96,7 +102,7 @@ Eigen::Vector3d local_translation(const Bvh_motion& motion, std::size_t joint, E
 std::vector<double> euler_angles(const Eigen::Quaterniond& r, const std::vector<Bvh_channel>& channels);
 
 /// Forward kinematics: the world position of every joint (End Sites included) at every frame,
-/// one row per frame, columns `3 * joint .. 3 * joint + 2`.
+/// one row per frame, columns `3 * joint .. 3 * joint + 2`.  \throws Invalid_input as `check_bvh_motion`.
 Eigen::MatrixXd joint_positions(const Bvh_motion& motion);
 
 } // namespace Spline_approximation
