@@ -115,10 +115,11 @@ int fit_motion_command(const Arguments& raw_args)
       if(!c.rotation) return c.bound;
     return 0.0;
   }();
+  char positions[64] = "";
+  if(position_bound > 0) std::snprintf(positions, sizeof positions, ", positions within %.6g units", position_bound);
   say("fit: degree %d, %s, %s; rotations within %.6g degrees (%s)%s\n", options.degree,
       SA::algorithm_name(options.algorithm), representation == "euler" ? "Euler angles unwrapped" : "unit quaternions",
-      options.rms_degrees ? *options.rms_degrees : options.max_degrees, options.rms_degrees ? "RMS" : "max",
-      position_bound > 0 ? (", positions within " + std::to_string(position_bound) + " units").c_str() : "");
+      options.rms_degrees ? *options.rms_degrees : options.max_degrees, options.rms_degrees ? "RMS" : "max", positions);
   say("%-24s %8s %9s %8s %11s %11s %12s\n", "joint", "channels", "rot.knots", "pos.knots", "stored", "max deg", "max position");
   std::vector<std::size_t> rotation_knots(motion.joints.size(), 0), position_knots(motion.joints.size(), 0),
       stored(motion.joints.size(), 0);
