@@ -160,7 +160,8 @@ void motion_jitter_table(const Motion_bench_options& o)
 {
   std::printf("\n6. a jittery walk regularised: the fit of walk + noise against the clean walk (no jitter), bound\n"
               "   at the noise level (max: the noise's max angle; RMS: its RMS), quaternions, cubic, greedy;\n"
-              "   candidates: every frame, or a grid of one candidate per 8 frames (grid)\n");
+              "   candidates: every frame, or a grid of one candidate per 8 frames (grid); with\n"
+              "   --motion-algorithms penalty also the penalty decomposition at the RMS bound (penalty)\n");
   std::printf("%6s %9s | %9s %9s | %9s %9s | %9s %9s | %8s\n", "noise", "bound", "noisy rms", "noisy max", "fit rms",
               "fit max", "fit/noisy", "pos f/n", "ratio");
   const long frames = std::min(o.frames, 2400L);
@@ -168,16 +169,17 @@ void motion_jitter_table(const Motion_bench_options& o)
   for(double sigma : {0.1, 0.5, 2.0}) {
     const SA::Bvh_motion noisy = walk(frames, sigma, 11);
     const SA::Motion_error noise = SA::motion_error(clean, noisy);
-    for(int row = 0; row < 4; ++row) {
-      const bool rms = row % 2 == 1, grid = row >= 2;
+    for(int row = 0; row < (o.penalty ? 5 : 4); ++row) {
+      const bool rms = row % 2 == 1 || row == 4, grid = row == 2 || row == 3, penalty = row == 4;
       SA::Motion_options mo;
+      if(penalty) mo.algorithm = SA::Fit_algorithm::penalty_decomposition;
       if(rms) mo.rms_degrees = noise.rms_degrees;
       else mo.max_degrees = noise.max_degrees;
       if(grid) mo.candidate_grid_size = std::size_t(frames / 8);
       const SA::Motion_compression c = SA::compress_motion(noisy, mo);
       const SA::Motion_error left = SA::motion_error(clean, c.motion);
       std::printf("%6.2g %9s | %9.4f %9.4f | %9.4f %9.4f | %9.3f %9.3f | %7.2fx\n", sigma,
-                  rms ? (grid ? "RMS grid" : "RMS") : (grid ? "max grid" : "max"),
+                  penalty ? "RMS pen." : rms ? (grid ? "RMS grid" : "RMS") : (grid ? "max grid" : "max"),
                   noise.rms_degrees, noise.max_degrees, left.rms_degrees, left.max_degrees, left.rms_degrees / noise.rms_degrees,
                   left.rms_position / noise.rms_position, c.ratio());
       std::fflush(stdout);
