@@ -447,6 +447,21 @@ TEST(Motion, MalformedInputRefused)
   EXPECT_THROW_REASON(SA::compress_motion(two_axes, o), SA::Invalid_input, "joint 'Spine' has 2 rotation channels");
   o.representation = SA::Rotation_representation::euler_angles; // the angles themselves: accepted
   EXPECT_LE(SA::compress_motion(two_axes, o).error.max_degrees, 1.0);
+  // One rotation axis is accepted as quaternions: the fit stays in the plane of (1, axis), whose
+  // angle is written back (and two position channels on a joint that is not the root).  Broken
+  // once: the angle read from the next axis' component: 6.98 degrees off.
+  SA::Bvh_motion one_axis = spline_motion(60);
+  one_axis.joints[1].channels[1] = SA::Bvh_channel::y_position;
+  one_axis.joints[1].channels[2] = SA::Bvh_channel::z_position;
+  o.representation = SA::Rotation_representation::quaternion;
+  o.max_degrees = 0.01;
+  o.max_position = 1e-3;
+  const SA::Motion_compression c1 = SA::compress_motion(one_axis, o);
+  EXPECT_LE(c1.error.joint_max_degrees[1], 0.01);
+  EXPECT_LE(c1.error.max_degrees, 0.01);
+  std::size_t spine_curves = 0;
+  for(const SA::Motion_curve& curve : c1.curves) spine_curves += curve.joint == 1 ? curve.columns.size() : 0;
+  EXPECT_EQ(spine_curves, 3u); // its rotation column and its two position columns
 }
 
 // Every text the reader is given is read or refused with Invalid_input (never another exception
