@@ -10,11 +10,19 @@
 //      parameter, which is never smaller: the comparison favours Douglas-Peucker);
 //   3. the gap to the exact optimum where it is known: degree 1 by dynamic programming on a
 //      grid of candidates, every degree by brute force on 14 candidates;
-//   4. error against knot count along a sweep of lambda.
+//   4. error against knot count along a sweep of lambda;
+//   5. motion capture (bench_motion.cpp): a generated 21-joint walk and any BVH files given,
+//      compressed within 0.1 to 2 degrees: stored-value ratio, knots, errors, seconds;
+//   6. a jittery walk regularised (distance to the clean walk before and after).
 //
 // Usage: bench_spline_approximation [--sizes 1000,10000,...] [--rms 0.002] [--max-error 0.005]
 //                                   [--noise 0.0005] [--sweep-size 2000] [--tables 1234]
-//                                   [--algorithms penalty,greedy] [--coarse-start-above 4096] [--help]
+//                                   [--algorithms penalty,greedy] [--coarse-start-above 4096]
+//                                   [--motion-frames 4000]
+//                                   [--motion-noise 0.02] [--motion-bounds 0.1,0.5,1,2]
+//                                   [--bvh a.bvh,b.bvh] [--motion-algorithms greedy,penalty] [--help]
+
+#include "bench_motion.h"
 
 #include <CGAL/Spline_approximation/Spline_fit.h>
 
@@ -109,6 +117,15 @@ std::pair<std::size_t, double> uniform_knots_for(const Eigen::MatrixXd& P, const
   return {hi, rms_of(hi)};
 }
 
+std::vector<std::string> parse_list(const std::string& s)
+{
+  std::vector<std::string> out;
+  std::stringstream in(s);
+  std::string item;
+  while(std::getline(in, item, ',')) out.push_back(item);
+  return out;
+}
+
 std::vector<Eigen::Index> parse_sizes(const std::string& s)
 {
   std::vector<Eigen::Index> out;
@@ -126,13 +143,16 @@ int main(int argc, char** argv)
   double rms = 0.002, max_error = 0.005, noise = 0.0005;
   Eigen::Index sweep_size = 2000;
   std::string tables = "1234", algorithm_names = "penalty,greedy";
+  Motion_bench_options motion;
   for(int i = 1; i < argc; ++i)
     if(std::string(argv[i]) == "--help") {
       std::printf("bench_spline_approximation [--sizes 1000,10000,100000,1000000] [--rms 0.002] [--max-error 0.005]\n"
                   "  [--noise 0.0005] [--sweep-size 2000] [--tables 1234] [--algorithms penalty,greedy]\n"
                   "  [--coarse-start-above 4096] (the heuristics' coarse-to-fine start past this many candidates)\n"
                   "tables: 1 cubic within an RMS bound against uniform knots, 2 degree 1 within a max error against\n"
-                  "Douglas-Peucker, 3 gap to the exact optimum, 4 lambda sweep; algorithms: the heuristics run in 1, 2, 4\n");
+                  "Douglas-Peucker, 3 gap to the exact optimum, 4 lambda sweep; algorithms: the heuristics run in 1, 2, 4\n"
+                  "  5 motion compression, 6 a jittery motion regularised: [--motion-frames 4000] [--motion-noise 0.02]\n"
+                  "  [--motion-bounds 0.1,0.5,1,2] [--bvh a.bvh,b.bvh] [--motion-algorithms greedy,penalty]\n");
       return 0;
     }
   for(int i = 1; i + 1 < argc; i += 2) {
@@ -145,9 +165,18 @@ int main(int argc, char** argv)
     else if(a == "--tables") tables = v;
     else if(a == "--algorithms") algorithm_names = v;
     else if(a == "--coarse-start-above") coarse_start_above = std::size_t(std::atoll(v.c_str()));
+    else if(a == "--motion-frames") motion.frames = std::atol(v.c_str());
+    else if(a == "--motion-noise") motion.noise_degrees = std::atof(v.c_str());
+    else if(a == "--bvh") motion.bvh_files = parse_list(v);
+    else if(a == "--motion-algorithms") motion.penalty = v.find("penalty") != std::string::npos;
+    else if(a == "--motion-bounds") {
+      motion.bounds.clear();
+      for(const std::string& b : parse_list(v)) motion.bounds.push_back(std::atof(b.c_str()));
+    }
     else { std::fprintf(stderr, "unknown option %s\n", a.c_str()); return 2; }
   }
-  std::printf("curves: noisy rose, noise sigma %g per coordinate; candidates: every sample\n\n", noise);
+  if(tables.find_first_of("1234") != std::string::npos)
+    std::printf("curves: noisy rose, noise sigma %g per coordinate; candidates: every sample\n\n", noise);
   std::vector<SA::Fit_algorithm> heuristics;
   for(SA::Fit_algorithm a : {SA::Fit_algorithm::penalty_decomposition, SA::Fit_algorithm::greedy_removal})
     if(algorithm_names.find(SA::algorithm_name(a)) != std::string::npos) heuristics.push_back(a);
@@ -240,5 +269,7 @@ int main(int argc, char** argv)
                     f.rms_error, f.max_error, f.seconds);
       }
   }
+  if(table('5')) motion_compression_table(motion);
+  if(table('6')) motion_jitter_table(motion);
   return 0;
 }

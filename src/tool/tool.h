@@ -80,6 +80,8 @@ int serve_command(const Arguments&);
 // Vibration modes (commands_vibration_modes.cpp).
 int modes_command(const Arguments&);
 int fit_command(const Arguments&);
+// Motion capture compression (commands_motion.cpp).
+int fit_motion_command(const Arguments&);
 // Projective Dynamics (commands_projective_dynamics.cpp).
 int simulate_command(const Arguments&);
 // n-direction fields (commands_n_fields.cpp); basis, design, export and render hand over to the

@@ -59,7 +59,9 @@ const std::vector<Command_system>& systems()
        modes_command}}},
     {"Optimal spline approximation (Chapter 6, CGAL Spline_approximation)",
      {{"fit", "the spline with the fewest knots within an error of a curve (CSV or OBJ polyline); JSON, OBJ, SVG",
-       fit_command}}},
+       fit_command},
+      {"fit-motion", "a BVH motion compressed by splines within bounds in degrees and units; the report, BVH out",
+       fit_motion_command}}},
     {"The viewer (every system)",
      {{"serve", "start the interactive viewer: a local web server and page (field editing today)", serve_command}}}};
   return list;

@@ -51,3 +51,6 @@ tvf_cli_test(fit.not_a_number failure ARGS fit ${CLI_OUT}/not_a_number.csv --max
              STDERR "not_a_number.csv' line 2, column 2: '1e' is not a number")
 tvf_cli_test(fit.zero_tolerance failure ARGS fit ${CLI_OUT}/line.csv --max-error 0
              STDERR "must be finite and > 0")
+
+# tvf fit-motion (BVH motion capture)
+include(${CMAKE_CURRENT_LIST_DIR}/motion_cli_tests.cmake)
