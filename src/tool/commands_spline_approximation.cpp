@@ -207,6 +207,15 @@ CGAL::Model_reduction::Line_chart error_chart(const std::vector<Curve_to_fit>& c
   return chart;
 }
 
+// Every contour cut at its kinks (SA::split_at_kinks), the pieces in order.
+std::vector<SA::Bezier_contour> split_all(const std::vector<SA::Bezier_contour>& contours)
+{
+  std::vector<SA::Bezier_contour> out;
+  for(const SA::Bezier_contour& c : contours)
+    for(SA::Bezier_contour& piece : SA::split_at_kinks(c)) out.push_back(std::move(piece));
+  return out;
+}
+
 } // namespace
 
 int fit_command(const Arguments& args)
@@ -240,7 +249,9 @@ int fit_command(const Arguments& args)
     ("em-size", po::value<double>()->value_name("S")->default_value(1000), "--glyph: the em square's size in output units")
     ("samples-per-segment", po::value<int>()->value_name("N")->default_value(16), "samples of each Bezier segment")
     ("parameters", po::value<std::string>()->value_name("P")->default_value("chord"),
-     "chord (chord length) or bezier (affine on every Bezier segment: exact segments are then recovered exactly)");
+     "chord (chord length) or bezier (affine on every Bezier segment: exact segments are then recovered exactly)")
+    ("split-kinks", "fit the pieces between the joints that are not C^1 in the Bezier parameter (corners) separately:\n"
+     "a spline of degree >= 2 with simple knots cannot turn a corner");
   if(!command.parse(args)) return 0; // --help
   const int bounds = int(command.has("max-error")) + int(command.has("rms-error")) + int(command.has("lambda"));
   if(bounds != 1) throw Usage_error("give exactly one of '--max-error', '--rms-error' and '--lambda'");
@@ -253,6 +264,7 @@ int fit_command(const Arguments& args)
   if(per_segment < 1 || per_segment > 100000) throw Usage_error("'--samples-per-segment' must be 1 to 100000");
 
   // The curves.
+  const bool split = command.has("split-kinks");
   std::vector<Curve_to_fit> curves;
   std::string source;
   bool y_down = false, from_contours = true;
@@ -270,7 +282,8 @@ int fit_command(const Arguments& args)
     {
       throw Tool_error(one_line(e.what()));
     }
-    curves = sample_contours(glyph.contours, per_segment, parameters == "bezier", "contour");
+    curves = sample_contours(split ? split_all(glyph.contours) : glyph.contours, per_segment, parameters == "bezier",
+                             split ? "piece" : "contour");
     say("glyph '%s' of %s (%s, %d units per em): %zu contours\n", command.get<std::string>("glyph").c_str(),
         source.c_str(), glyph.font_format.c_str(), glyph.units_per_em, glyph.contours.size());
 #else
@@ -295,7 +308,8 @@ int fit_command(const Arguments& args)
       if(svg.transforms_ignored > 0)
         warn("'" + source + "': " + std::to_string(svg.transforms_ignored) +
              " transform attribute(s) not applied: the path coordinates are taken as written");
-      curves = sample_contours(svg.contours, per_segment, parameters == "bezier", "subpath");
+      curves = sample_contours(split ? split_all(svg.contours) : svg.contours, per_segment, parameters == "bezier",
+                               split ? "piece" : "subpath");
       y_down = true;
     }
     else
@@ -309,6 +323,8 @@ int fit_command(const Arguments& args)
   }
   if(from_contours && command.has("closed"))
     throw Usage_error("'--closed' is for tables and OBJ polylines: SVG subpaths are closed by Z, glyph contours always");
+  if(!from_contours && split)
+    throw Usage_error("'--split-kinks' is for SVG paths and glyphs (tables and OBJ polylines have no Bezier segments)");
   if(!from_contours && parameters == "bezier")
     throw Usage_error("'--parameters bezier' is for SVG paths and glyphs (tables and OBJ polylines have no Bezier segments)");
   if(curves.empty()) throw Tool_error("'" + source + "' has no curve to fit");
