@@ -12,6 +12,7 @@ packages=(
   libsuitesparse-dev libopenblas0-pthread   # CHOLMOD, with OpenBLAS as its BLAS (about 3x faster than the reference BLAS)
   libgtest-dev
   libcairo2-dev pkg-config fonts-dejavu-core # pictures: Field_renderer (PNG, SVG) and its text
+  libfreetype-dev                            # glyph outlines read from fonts (Spline_approximation, tvf fit --glyph): exact Bezier truth
   libcgal-demo                               # CGAL's data tree: the default mesh and the test meshes
   chromium                                   # the editor's end-to-end test (headless)
   clang libclang-rt-14-dev                   # the fuzzers (scripts/fuzz.sh): libFuzzer, ASan and UBSan runtimes

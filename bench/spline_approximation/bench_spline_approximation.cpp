@@ -13,18 +13,25 @@
 //   4. error against knot count along a sweep of lambda;
 //   5. motion capture (bench_motion.cpp): a generated 21-joint walk and any BVH files given,
 //      compressed within 0.1 to 2 degrees: stored-value ratio, knots, errors, seconds;
-//   6. a jittery walk regularised (distance to the clean walk before and after).
+//   6. a jittery walk regularised (distance to the clean walk before and after);
+//   7. degree 1 side by side with Douglas-Peucker and CGAL's Polyline_simplification_2 on glyph
+//      contours, SVG paths and the noisy rose, every result measured with one independent error
+//      (polyline_comparison.cpp).
 //
 // Usage: bench_spline_approximation [--sizes 1000,10000,...] [--rms 0.002] [--max-error 0.005]
 //                                   [--noise 0.0005] [--sweep-size 2000] [--tables 1234]
 //                                   [--algorithms penalty,greedy] [--coarse-start-above 4096]
 //                                   [--motion-frames 4000]
 //                                   [--motion-noise 0.02] [--motion-bounds 0.1,0.5,1,2]
-//                                   [--bvh a.bvh,b.bvh] [--motion-algorithms greedy,penalty] [--help]
+//                                   [--bvh a.bvh,b.bvh] [--motion-algorithms greedy,penalty]
+//                                   [--svg FILE] [--targets 0.001,0.005]
+//                                   [--methods greedy,penalty,exact,dp,cgal,cgal-hybrid] [--help]
 
 #include "bench_motion.h"
 
 #include <CGAL/Spline_approximation/Spline_fit.h>
+
+#include "polyline_comparison.h"
 
 #include <chrono>
 #include <cmath>
@@ -67,36 +74,6 @@ SA::Fit_options options(int k, SA::Fit_algorithm a)
   o.degree = k;
   o.algorithm = a;
   return o;
-}
-
-// Douglas-Peucker: the vertices kept for a max distance eps to the simplified polyline.
-std::size_t douglas_peucker(const Eigen::MatrixXd& P, double eps)
-{
-  std::vector<char> keep(std::size_t(P.rows()), 0);
-  keep.front() = keep.back() = 1;
-  std::vector<std::pair<Eigen::Index, Eigen::Index>> stack = {{0, P.rows() - 1}};
-  while(!stack.empty()) {
-    const auto [a, b] = stack.back();
-    stack.pop_back();
-    const Eigen::RowVectorXd d = P.row(b) - P.row(a);
-    const double L2 = d.squaredNorm();
-    double worst = -1;
-    Eigen::Index at = -1;
-    for(Eigen::Index j = a + 1; j < b; ++j) {
-      const Eigen::RowVectorXd v = P.row(j) - P.row(a);
-      const double s = L2 > 0 ? std::clamp(v.dot(d) / L2, 0.0, 1.0) : 0.0;
-      const double dist = (v - s * d).norm();
-      if(dist > worst) { worst = dist; at = j; }
-    }
-    if(worst > eps) {
-      keep[std::size_t(at)] = 1;
-      stack.push_back({a, at});
-      stack.push_back({at, b});
-    }
-  }
-  std::size_t count = 0;
-  for(char c : keep) count += std::size_t(c);
-  return count;
 }
 
 // The fewest uniform knots whose least-squares cubic reaches the RMS bound (doubling, then
@@ -142,8 +119,13 @@ int main(int argc, char** argv)
   std::vector<Eigen::Index> sizes = {1000, 10000, 100000, 1000000};
   double rms = 0.002, max_error = 0.005, noise = 0.0005;
   Eigen::Index sweep_size = 2000;
-  std::string tables = "1234", algorithm_names = "penalty,greedy";
+  std::string tables = "1234", algorithm_names = "penalty,greedy", svg_file;
   Motion_bench_options motion;
+  std::string methods = "greedy,penalty,exact,dp,cgal,cgal-hybrid";
+  std::vector<double> targets = {0.001, 0.005};
+  Eigen::Index comparison_size = 2000;
+  int samples_per_segment = 16;
+  std::setvbuf(stdout, nullptr, _IOLBF, 0); // rows appear as they are measured, also into a file
   for(int i = 1; i < argc; ++i)
     if(std::string(argv[i]) == "--help") {
       std::printf("bench_spline_approximation [--sizes 1000,10000,100000,1000000] [--rms 0.002] [--max-error 0.005]\n"
@@ -152,7 +134,9 @@ int main(int argc, char** argv)
                   "tables: 1 cubic within an RMS bound against uniform knots, 2 degree 1 within a max error against\n"
                   "Douglas-Peucker, 3 gap to the exact optimum, 4 lambda sweep; algorithms: the heuristics run in 1, 2, 4\n"
                   "  5 motion compression, 6 a jittery motion regularised: [--motion-frames 4000] [--motion-noise 0.02]\n"
-                  "  [--motion-bounds 0.1,0.5,1,2] [--bvh a.bvh,b.bvh] [--motion-algorithms greedy,penalty]\n");
+                  "  [--motion-bounds 0.1,0.5,1,2] [--bvh a.bvh,b.bvh] [--motion-algorithms greedy,penalty]\n"
+                  "  7 degree 1 against Douglas-Peucker and CGAL's Polyline_simplification_2: [--svg FILE] [--targets 0.001,0.005 (fractions of the extent)] [--comparison-size 2000]\n"
+                  "  [--samples-per-segment 16] [--methods greedy,penalty,exact,dp,cgal,cgal-hybrid]\n");
       return 0;
     }
   for(int i = 1; i + 1 < argc; i += 2) {
@@ -172,6 +156,15 @@ int main(int argc, char** argv)
     else if(a == "--motion-bounds") {
       motion.bounds.clear();
       for(const std::string& b : parse_list(v)) motion.bounds.push_back(std::atof(b.c_str()));
+    }
+    else if(a == "--svg") svg_file = v;
+    else if(a == "--methods") methods = v;
+    else if(a == "--comparison-size") comparison_size = Eigen::Index(std::atoll(v.c_str()));
+    else if(a == "--samples-per-segment") samples_per_segment = std::atoi(v.c_str());
+    else if(a == "--targets") {
+      targets.clear();
+      std::stringstream in(v);
+      for(std::string item; std::getline(in, item, ',');) targets.push_back(std::atof(item.c_str()));
     }
     else { std::fprintf(stderr, "unknown option %s\n", a.c_str()); return 2; }
   }
@@ -210,7 +203,7 @@ int main(int argc, char** argv)
     for(Eigen::Index n : sizes) {
       const Eigen::MatrixXd P = curve(n, noise);
       const auto t0 = std::chrono::steady_clock::now();
-      const std::size_t dp_vertices = douglas_peucker(P, max_error);
+      const std::size_t dp_vertices = bench_spline::douglas_peucker(P, max_error).size();
       const double dp_seconds = seconds_since(t0);
       for(SA::Fit_algorithm a : heuristics) {
         SA::Fit_options o = options(1, a);
@@ -271,5 +264,18 @@ int main(int argc, char** argv)
   }
   if(table('5')) motion_compression_table(motion);
   if(table('6')) motion_jitter_table(motion);
+  if(table('7')) {
+    std::printf("\n7. degree 1 against Douglas-Peucker and CGAL Polyline_simplification_2 at equal measured error\n"
+                "   (measured: max distance of the input vertices to the output polyline; each method's tolerance bisected\n"
+                "   to meet the target, the fewest vertices kept; glyphs and SVG paths sampled %d points per segment)\n",
+                samples_per_segment);
+    std::vector<bench_spline::Comparison_curve> curves = bench_spline::comparison_curves(svg_file, samples_per_segment);
+    bench_spline::Comparison_curve rose;
+    rose.name = "noisy rose " + std::to_string(comparison_size);
+    rose.polylines.push_back(curve(comparison_size, noise));
+    rose.closed.push_back(false);
+    curves.push_back(std::move(rose));
+    bench_spline::polyline_comparison(curves, targets, methods);
+  }
   return 0;
 }
