@@ -13,14 +13,14 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
 shift || true
-all_targets=(tvf tvfb tvfn tvfc rawfield vtp singularities constraints editor mesh medit)
+all_targets=(tvf tvfb tvfn tvfc rawfield vtp singularities constraints editor mesh medit curves)
 targets=("$@")
 if [ ${#targets[@]} -eq 0 ]; then targets=("${all_targets[@]}"); fi
 
 # Longest input per target: the largest seed with room to grow, small enough to stay fast.
 declare -A max_len=([tvf]=16384 [tvfb]=65536 [tvfn]=65536 [tvfc]=1024 [rawfield]=32768 [vtp]=32768
                     [singularities]=1024 [constraints]=4096 [editor]=4096 [mesh]=4096
-                    [medit]=8192)
+                    [medit]=8192 [curves]=8192)
 
 # -O1: the fuzzers need speed more than the last optimisations, and it compiles faster.
 cmake -S . -B build-fuzz -DCMAKE_CXX_COMPILER="${FUZZ_CXX:-clang++}" -DCMAKE_BUILD_TYPE=Release \

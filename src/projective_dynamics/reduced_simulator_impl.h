@@ -14,8 +14,8 @@
 #include "element_graph.h"
 #include "hyper_reduction.h"
 #include "scene_handles.h"
-#include "thread_pool.h"
 
+#include <CGAL/Model_reduction/internal/Thread_pool.h>
 #include <CGAL/Model_reduction/internal/binary_file.h>
 #include <CGAL/Model_reduction/internal/mesh_identity.h>
 
@@ -79,7 +79,7 @@ struct Reduced_simulator::Impl : internal::Scene_handles
   Elastic_model model;
   Simulator_options o;
   Reduction_options r;
-  internal::Thread_pool pool;
+  Model_reduction::internal::Thread_pool pool;
   Sparse U, Ut;
   std::vector<int> samples;
   Eigen::MatrixXd Mr;
@@ -107,7 +107,7 @@ struct Reduced_simulator::Impl : internal::Scene_handles
 
   Impl(Elastic_model m, const Simulator_options& options, const Reduction_options& reduction)
     : Scene_handles(m.number_of_vertices()), model(std::move(m)), o(options), r(reduction),
-      pool(internal::thread_count(options.threads))
+      pool(Model_reduction::internal::thread_count(options.threads))
   {}
 
   int n() const { return model.number_of_vertices(); }

@@ -7,9 +7,9 @@
 #include <CGAL/Projective_dynamics/Simulator.h>
 
 #include <CGAL/Model_reduction/Sparse_spd_solver.h>
+#include <CGAL/Model_reduction/internal/Thread_pool.h>
 
 #include "scene_handles.h"
-#include "thread_pool.h"
 
 #include <algorithm>
 #include <chrono>
@@ -33,7 +33,7 @@ using internal::Sphere;
 struct Simulator::Impl : internal::Scene_handles
 {
   Impl(Elastic_model m, const Simulator_options& options)
-    : Scene_handles(m.number_of_vertices()), model(std::move(m)), o(options), pool(internal::thread_count(options.threads))
+    : Scene_handles(m.number_of_vertices()), model(std::move(m)), o(options), pool(Model_reduction::internal::thread_count(options.threads))
   {
     const int n = model.number_of_vertices();
     q = model.rest_positions();
@@ -43,7 +43,7 @@ struct Simulator::Impl : internal::Scene_handles
 
   Elastic_model model;
   Simulator_options o;
-  internal::Thread_pool pool;
+  Model_reduction::internal::Thread_pool pool;
   Positions q, v, f_ext;
 
   bool dirty = true;

@@ -14,34 +14,6 @@ namespace Spline_approximation {
 namespace internal {
 namespace {
 
-// The span s (k <= s < number of control points) with U[s] <= t < U[s+1]; the last span for t at the end.
-Eigen::Index find_span(const Eigen::VectorXd& U, int k, double t)
-{
-  const Eigen::Index n_ctrl = U.size() - k - 1;
-  if(t >= U[n_ctrl]) return n_ctrl - 1;
-  if(t <= U[k]) return k;
-  const double* it = std::upper_bound(U.data() + k, U.data() + n_ctrl + 1, t);
-  return Eigen::Index(it - U.data()) - 1;
-}
-
-// The k + 1 basis functions N_{s-k..s} nonzero on span s, at t (Cox-de Boor, triangular scheme).
-void basis_functions(const Eigen::VectorXd& U, int k, Eigen::Index s, double t, double* N)
-{
-  double left[4], right[4];
-  N[0] = 1.0;
-  for(int j = 1; j <= k; ++j) {
-    left[j] = t - U[s + 1 - j];
-    right[j] = U[s + j] - t;
-    double saved = 0.0;
-    for(int r = 0; r < j; ++r) {
-      const double tmp = N[r] / (right[r + 1] + left[j - r]);
-      N[r] = saved + right[r + 1] * tmp;
-      saved = left[j - r] * tmp;
-    }
-    N[j] = saved;
-  }
-}
-
 // The k-th derivative of N_{i,k}, constant on each span l = i .. i+k: c[l - i].  Differentiating
 // k times by N'_{l,p} = p (N_{l,p-1} / (U_{l+p} - U_l) - N_{l+1,p-1} / (U_{l+p+1} - U_{l+1})).
 void kth_derivative_on_spans(const Eigen::VectorXd& U, int k, Eigen::Index i, double* c)
@@ -128,17 +100,6 @@ Basis make_basis(const Eigen::VectorXd& knots, int degree, bool closed)
   }
   b.controls = m;
   return b;
-}
-
-Eigen::Index Basis_at::operator()(double t, double* N)
-{
-  const int k = b_.degree;
-  int steps = 0; // a few steps at most, so that jumping parameters cost a search, not a walk
-  if(s_ >= 0 && t >= b_.U[s_])
-    while(steps < 8 && s_ < last_span_ && t >= b_.U[s_ + 1]) ++s_, ++steps;
-  if(s_ < 0 || t < b_.U[s_] || (s_ < last_span_ && t >= b_.U[s_ + 1])) s_ = find_span(b_.U, k, t);
-  basis_functions(b_.U, k, s_, t, N);
-  return s_ - k;
 }
 
 Band_rows design_rows(const Basis& b, const Eigen::VectorXd& t)

@@ -5,11 +5,14 @@
 
 #include <CGAL/Spline_approximation/internal/spline_numerics.h>
 
+#include <CGAL/Model_reduction/internal/Thread_pool.h>
+
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <stdexcept>
 #include <tuple>
 
 namespace CGAL {
@@ -129,6 +132,30 @@ Eigen::MatrixXd Spd_matrix::solve(const Eigen::MatrixXd& B) const
 
 namespace {
 
+// Passes over more samples than this are split over the machine's cores: a sample costs a few
+// dozen flops, so below it starting a thread costs more than it saves.
+constexpr Eigen::Index parallel_samples = Eigen::Index(1) << 17;
+
+// Runs `part(p, begin, end)` for the parts p = 0 .. parts - 1 of [0, n), on up to 4 cores when n
+// is large (the passes are bound by memory bandwidth beyond that); returns the number of parts
+// (1 for a small n, at most 8).  The parts depend on the core count only, so that on one machine
+// the sums always add in the same order.
+template <class Part>
+int over_sample_parts(Eigen::Index n, const Part& part)
+{
+  if(n < parallel_samples) {
+    part(0, Eigen::Index(0), n);
+    return 1;
+  }
+  Model_reduction::internal::Thread_pool pool(std::min(4, Model_reduction::internal::thread_count(0)));
+  const int parts = std::max(4, 2 * pool.size()); // the pool splits a range of at least 2 per worker + 2
+  pool.run(std::size_t(parts), [&](std::size_t begin, std::size_t end) {
+    for(std::size_t p = begin; p < end; ++p)
+      part(int(p), n * Eigen::Index(p) / parts, n * Eigen::Index(p + 1) / parts);
+  });
+  return parts;
+}
+
 // The normal equations A^T A X = A^T P of an open curve's fit, each sample's basis functions
 // computed in registers and used at once: no n x (k + 1) design matrix, whose allocation (its
 // page faults included) cost as much as the arithmetic on a million samples.
@@ -136,15 +163,28 @@ void open_normal_equations(const Basis& basis, const Eigen::VectorXd& t, const E
                            Eigen::MatrixXd& AtP)
 {
   const int k = basis.degree;
-  Banded_spd& band = AtA.band();
-  Basis_at at(basis);
-  double N[4];
-  for(Eigen::Index j = 0; j < t.size(); ++j) {
-    const Eigen::Index first = at(t[j], N);
-    for(int a = 0; a <= k; ++a) {
-      for(int b = 0; b <= a; ++b) band.at(first + a, first + b) += N[a] * N[b];
-      for(Eigen::Index c = 0; c < P.cols(); ++c) AtP(first + a, c) += N[a] * P(j, c);
+  auto accumulate = [&](Banded_spd& band, Eigen::MatrixXd& rhs, Eigen::Index begin, Eigen::Index end) {
+    Basis_at at(basis);
+    double N[4];
+    for(Eigen::Index j = begin; j < end; ++j) {
+      const Eigen::Index first = at(t[j], N);
+      for(int a = 0; a <= k; ++a) {
+        for(int b = 0; b <= a; ++b) band.at(first + a, first + b) += N[a] * N[b];
+        for(Eigen::Index c = 0; c < P.cols(); ++c) rhs(first + a, c) += N[a] * P(j, c);
+      }
     }
+  };
+  Banded_spd& band = AtA.band();
+  if(t.size() < parallel_samples) return accumulate(band, AtP, 0, t.size());
+  std::vector<Banded_spd> bands(8, Banded_spd(band.size(), band.bandwidth()));
+  std::vector<Eigen::MatrixXd> rhss(8, Eigen::MatrixXd::Zero(AtP.rows(), AtP.cols()));
+  const int parts = over_sample_parts(t.size(), [&](int p, Eigen::Index begin, Eigen::Index end) {
+    if(p >= int(bands.size())) throw std::logic_error("open_normal_equations: more parts than accumulators");
+    accumulate(bands[std::size_t(p)], rhss[std::size_t(p)], begin, end);
+  });
+  for(int p = 0; p < parts; ++p) {
+    band.add(bands[std::size_t(p)]);
+    AtP += rhss[std::size_t(p)];
   }
 }
 
@@ -154,21 +194,29 @@ std::pair<double, double> open_errors(const Basis& basis, const Eigen::VectorXd&
                                       const Eigen::MatrixXd& X, Eigen::VectorXd* errors)
 {
   const int k = basis.degree;
-  Basis_at at(basis);
-  double N[4], largest = 0, sum = 0;
-  for(Eigen::Index j = 0; j < t.size(); ++j) {
-    const Eigen::Index first = at(t[j], N);
-    double squared = 0;
-    for(Eigen::Index c = 0; c < P.cols(); ++c) {
-      double value = -P(j, c);
-      for(int a = 0; a <= k; ++a) value += N[a] * X(first + a, c);
-      squared += value * value;
+  double largest[64] = {}, sum[64] = {};
+  const int parts = over_sample_parts(t.size(), [&](int p, Eigen::Index begin, Eigen::Index end) {
+    if(p >= 64) throw std::logic_error("open_errors: more parts than sums");
+    Basis_at at(basis);
+    double N[4], part_sum = 0, part_largest = 0; // locals: the parts' sums share a cache line
+    for(Eigen::Index j = begin; j < end; ++j) {
+      const Eigen::Index first = at(t[j], N);
+      double squared = 0;
+      for(Eigen::Index c = 0; c < P.cols(); ++c) {
+        double value = -P(j, c);
+        for(int a = 0; a <= k; ++a) value += N[a] * X(first + a, c);
+        squared += value * value;
+      }
+      part_sum += squared;
+      part_largest = std::max(part_largest, squared);
+      if(errors) (*errors)[j] = std::sqrt(squared);
     }
-    sum += squared;
-    largest = std::max(largest, squared);
-    if(errors) (*errors)[j] = std::sqrt(squared);
-  }
-  return {std::sqrt(largest), sum};
+    sum[p] = part_sum;
+    largest[p] = part_largest;
+  });
+  double total = 0, most = 0;
+  for(int p = 0; p < parts; ++p) total += sum[p], most = std::max(most, largest[p]);
+  return {std::sqrt(most), total};
 }
 
 } // namespace

@@ -11,6 +11,8 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
+
 #include <cstddef>
 #include <memory>
 #include <optional>
@@ -50,15 +52,53 @@ struct Basis
 Basis make_basis(const Eigen::VectorXd& knots, int degree, bool closed);
 // The clamped knot vector of `interior` knots for `degree`.
 Eigen::VectorXd clamped_knots(const Eigen::VectorXd& interior, int degree);
+// The span s (k <= s < number of control points) with U[s] <= t < U[s+1]; the last span for t at the end.
+inline Eigen::Index find_span(const Eigen::VectorXd& U, int k, double t)
+{
+  const Eigen::Index n_ctrl = U.size() - k - 1;
+  if(t >= U[n_ctrl]) return n_ctrl - 1;
+  if(t <= U[k]) return k;
+  const double* it = std::upper_bound(U.data() + k, U.data() + n_ctrl + 1, t);
+  return Eigen::Index(it - U.data()) - 1;
+}
+
+// The k + 1 basis functions N_{s-k..s} nonzero on span s, at t (Cox-de Boor, triangular scheme).
+inline void basis_functions(const Eigen::VectorXd& U, int k, Eigen::Index s, double t, double* N)
+{
+  double left[4], right[4];
+  N[0] = 1.0;
+  for(int j = 1; j <= k; ++j) {
+    left[j] = t - U[s + 1 - j];
+    right[j] = U[s + j] - t;
+    double saved = 0.0;
+    for(int r = 0; r < j; ++r) {
+      const double tmp = N[r] / (right[r + 1] + left[j - r]);
+      N[r] = saved + right[r + 1] * tmp;
+      saved = left[j - r] * tmp;
+    }
+    N[j] = saved;
+  }
+}
+
 // The k + 1 basis functions nonzero at one parameter after another: increasing parameters
-// (every fit's) walk the spans in order, others are searched for.
+// (every fit's) walk the spans in order, others are searched for.  Inline: it is the inner loop
+// of every least-squares fit.
 class Basis_at
 {
 public:
   explicit Basis_at(const Basis& b) : b_(b), last_span_(b.U.size() - b.degree - 2) {}
   // N_{s-k}(t) .. N_s(t) into N[0..k]; returns s - k, the column of N[0] (modulo the number of
   // control points of a closed basis).
-  Eigen::Index operator()(double t, double* N);
+  Eigen::Index operator()(double t, double* N)
+  {
+    const Eigen::VectorXd& U = b_.U;
+    int steps = 0; // a few steps at most, so that jumping parameters cost a search, not a walk
+    if(s_ >= 0 && t >= U[s_])
+      while(steps < 8 && s_ < last_span_ && t >= U[s_ + 1]) ++s_, ++steps;
+    if(s_ < 0 || t < U[s_] || (s_ < last_span_ && t >= U[s_ + 1])) s_ = find_span(U, b_.degree, t);
+    basis_functions(U, b_.degree, s_, t, N);
+    return s_ - b_.degree;
+  }
 
 private:
   const Basis& b_;
@@ -82,6 +122,7 @@ public:
   double& at(Eigen::Index i, Eigen::Index j) { return band_(i, i - j); } // i >= j, i - j <= w
   double at(Eigen::Index i, Eigen::Index j) const { return band_(i, i - j); }
   void add_gram(const Band_rows& R, double w); // += w R^T R
+  void add(const Banded_spd& B) { band_ += B.band_; } // += B, of the same size and band
   Banded_spd plus(const Banded_spd& B, double beta) const; // this + beta B (B's band may be wider)
   double max_diagonal() const { return band_.col(0).maxCoeff(); }
   // Factors in place; false if a pivot falls below `relative_pivot` times its diagonal entry.

@@ -1,12 +1,13 @@
-// Copyright (c) 2026 The Projective_dynamics authors.
+// Copyright (c) 2026 The Model_reduction authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
 // A fixed set of worker threads that run one loop at a time, split into contiguous ranges:
-// the local steps run every iteration, and starting threads each time would cost ~20-50 us
-// per iteration (noticeable at small meshes).
+// Projective_dynamics' local steps run every iteration, and starting threads each time would
+// cost ~20-50 us per iteration (noticeable at small meshes); Spline_approximation's
+// least-squares fits split their passes over a million samples.
 
-#ifndef CGAL_PROJECTIVE_DYNAMICS_SRC_THREAD_POOL_H
-#define CGAL_PROJECTIVE_DYNAMICS_SRC_THREAD_POOL_H
+#ifndef CGAL_MODEL_REDUCTION_INTERNAL_THREAD_POOL_H
+#define CGAL_MODEL_REDUCTION_INTERNAL_THREAD_POOL_H
 
 #include <algorithm>
 #include <condition_variable>
@@ -17,10 +18,10 @@
 #include <vector>
 
 namespace CGAL {
-namespace Projective_dynamics {
+namespace Model_reduction {
 namespace internal {
 
-/// Threads for a simulator asked for `asked` (0: one per core), at most 256.
+/// Threads for a job asked for `asked` (0: one per core), at most 256.
 inline int thread_count(int asked)
 {
   const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
@@ -117,7 +118,7 @@ private:
 };
 
 } // namespace internal
-} // namespace Projective_dynamics
+} // namespace Model_reduction
 } // namespace CGAL
 
 #endif
