@@ -95,7 +95,6 @@ int Constrained_group_lasso::solve_on_plane(const Eigen::VectorXd& c, int max_it
   tolerance = std::max(tolerance, tolerance_);
   converged_ = false;
   const Eigen::Index f = F_.cols(), n = c.size();
-  const int g = p_.group_size;
   Eigen::MatrixXd MC(n, f + 1), W(n, f + 1);
   Eigen::LDLT<Eigen::MatrixXd> schur;
   auto prepare = [&] {
