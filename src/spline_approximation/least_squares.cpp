@@ -12,7 +12,6 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
-#include <stdexcept>
 #include <tuple>
 
 namespace CGAL {
@@ -135,10 +134,11 @@ namespace {
 // Passes over more samples than this are split over the machine's cores: a sample costs a few
 // dozen flops, so below it starting a thread costs more than it saves.
 constexpr Eigen::Index parallel_samples = Eigen::Index(1) << 17;
+// Up to 4 threads (the passes are bound by memory bandwidth beyond that), two parts each.
+constexpr int max_sample_threads = 4, max_sample_parts = 2 * max_sample_threads;
 
-// Runs `part(p, begin, end)` for the parts p = 0 .. parts - 1 of [0, n), on up to 4 cores when n
-// is large (the passes are bound by memory bandwidth beyond that); returns the number of parts
-// (1 for a small n, at most 8).  The parts depend on the core count only, so that on one machine
+// Runs `part(p, begin, end)` for the parts p = 0 .. parts - 1 of [0, n), on the cores when n is
+// large; returns the number of parts (1 for a small n, at most `max_sample_parts`).  The parts depend on the core count only, so that on one machine
 // the sums always add in the same order.
 template <class Part>
 int over_sample_parts(Eigen::Index n, const Part& part)
@@ -147,7 +147,7 @@ int over_sample_parts(Eigen::Index n, const Part& part)
     part(0, Eigen::Index(0), n);
     return 1;
   }
-  Model_reduction::internal::Thread_pool pool(std::min(4, Model_reduction::internal::thread_count(0)));
+  Model_reduction::internal::Thread_pool pool(std::min(max_sample_threads, Model_reduction::internal::thread_count(0)));
   const int parts = std::max(4, 2 * pool.size()); // the pool splits a range of at least 2 per worker + 2
   pool.run(std::size_t(parts), [&](std::size_t begin, std::size_t end) {
     for(std::size_t p = begin; p < end; ++p)
@@ -176,10 +176,9 @@ void open_normal_equations(const Basis& basis, const Eigen::VectorXd& t, const E
   };
   Banded_spd& band = AtA.band();
   if(t.size() < parallel_samples) return accumulate(band, AtP, 0, t.size());
-  std::vector<Banded_spd> bands(8, Banded_spd(band.size(), band.bandwidth()));
-  std::vector<Eigen::MatrixXd> rhss(8, Eigen::MatrixXd::Zero(AtP.rows(), AtP.cols()));
+  std::vector<Banded_spd> bands(max_sample_parts, Banded_spd(band.size(), band.bandwidth()));
+  std::vector<Eigen::MatrixXd> rhss(max_sample_parts, Eigen::MatrixXd::Zero(AtP.rows(), AtP.cols()));
   const int parts = over_sample_parts(t.size(), [&](int p, Eigen::Index begin, Eigen::Index end) {
-    if(p >= int(bands.size())) throw std::logic_error("open_normal_equations: more parts than accumulators");
     accumulate(bands[std::size_t(p)], rhss[std::size_t(p)], begin, end);
   });
   for(int p = 0; p < parts; ++p) {
@@ -194,9 +193,8 @@ std::pair<double, double> open_errors(const Basis& basis, const Eigen::VectorXd&
                                       const Eigen::MatrixXd& X, Eigen::VectorXd* errors)
 {
   const int k = basis.degree;
-  double largest[64] = {}, sum[64] = {};
+  double largest[max_sample_parts] = {}, sum[max_sample_parts] = {};
   const int parts = over_sample_parts(t.size(), [&](int p, Eigen::Index begin, Eigen::Index end) {
-    if(p >= 64) throw std::logic_error("open_errors: more parts than sums");
     Basis_at at(basis);
     double N[4], part_sum = 0, part_largest = 0; // locals: the parts' sums share a cache line
     for(Eigen::Index j = begin; j < end; ++j) {
