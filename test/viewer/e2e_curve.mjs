@@ -151,6 +151,33 @@ async function main() {
     readout = await page.locator('#curve-readout').textContent();
     check(readout.startsWith(`${loose.knots} knots`), `the readout follows: "${readout}"`);
 
+    // A burst of slider moves faster than the fits: one fit in flight, the latest waiting, so
+    // far fewer fits than moves, and the last one at the slider's last value.
+    const burst = await page.evaluate(async () => {
+      const slider = document.getElementById('curve-tolerance');
+      const before = window.tvfCurve.log().length;
+      for (let v = 300; v < 500; v += 5) {
+        slider.value = String(v);
+        slider.dispatchEvent(new Event('input'));
+      }
+      await window.tvfCurve.idle();
+      const log = window.tvfCurve.log();
+      return { moves: 40, fits: log.length - before, last: log[log.length - 1].tolerance,
+        wanted: window.tvfCurve.sliderToTolerance(495) };
+    });
+    check(burst.fits <= 2 && Math.abs(burst.last - burst.wanted) < 1e-9 * burst.wanted,
+      `${burst.moves} slider moves at once: ${burst.fits} fits, the last at the last value (${burst.last.toFixed(2)} px)`);
+
+    // Closed: the end joins the start, re-fitted without the points.
+    await page.check('#curve-closed');
+    await page.evaluate(() => window.tvfCurve.idle());
+    fit = await page.evaluate(() => window.tvfCurve.lastFit());
+    const [x0, y0] = fit.curve, [x1, y1] = fit.curve.slice(-2);
+    check(fit.header.closed && fit.header.within_bound && Math.hypot(x1 - x0, y1 - y0) < 1e-3,
+      `closed: ${fit.header.knots} knots, the curve ends where it starts`);
+    await page.uncheck('#curve-closed');
+    await dragSlider(page, 0.85);
+
     // Degree 1 and the control polygon, through the panel.
     await page.selectOption('#curve-degree', '1');
     await page.check('#curve-polygon');

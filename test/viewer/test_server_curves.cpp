@@ -224,6 +224,34 @@ TEST_F(Curve_server_test, bad_messages_are_refused_with_their_reason)
   EXPECT_EQ(s.client.expect("pong").json.get<int>("request"), 10);
 }
 
+// A 3D stroke: a polyline on the edges of a cube, its two interior corners the knots.
+TEST_F(Curve_server_test, a_3d_stroke_has_its_knots_at_its_corners)
+{
+  Curve_test_session s(server->address());
+  const std::vector<std::array<double, 3>> corners = {{0, 0, 0}, {10, 0, 0}, {10, 10, 0}, {10, 10, 10}};
+  std::ostringstream points;
+  points.precision(17);
+  points << "[";
+  for(std::size_t i = 0; i + 1 < corners.size(); ++i)
+    for(int k = 0; k < 10; ++k)
+    {
+      const double u = k / 10.0;
+      points << (i + k ? "," : "") << "[" << corners[i][0] + u * (corners[i + 1][0] - corners[i][0]) << ","
+             << corners[i][1] + u * (corners[i + 1][1] - corners[i][1]) << ","
+             << corners[i][2] + u * (corners[i + 1][2] - corners[i][2]) << "]";
+    }
+  points << ",[10,10,10]]";
+  s.client.send("{\"type\":\"stroke\",\"degree\":1,\"tolerance\":1e-9,\"points\":" + points.str() + "}");
+  const Message fit = s.client.expect("curve");
+  EXPECT_EQ(fit.json.get<int>("dimension"), 3);
+  ASSERT_EQ(fit.json.get<int>("knots"), 2);
+  const std::vector<float>& knots = fit.floats.at("knot_points");
+  ASSERT_EQ(knots.size(), 6u);
+  for(int i = 0; i < 2; ++i)
+    for(int k = 0; k < 3; ++k) EXPECT_NEAR(knots[std::size_t(3 * i + k)], corners[std::size_t(i) + 1][std::size_t(k)], 1e-4);
+  EXPECT_EQ(fit.floats.at("curve").size() % 3, 0u);
+}
+
 TEST_F(Curve_server_test, closed_strokes_and_clear)
 {
   Curve_test_session s(server->address());
