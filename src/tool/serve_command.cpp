@@ -2,13 +2,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // `tvf serve`: the viewer (src/viewer) with the sessions of Chapters 1 and 2, designing
-// tangent vector fields and n-direction fields on the mesh (doc/viewer/protocol.md).  Here:
+// tangent vector fields and n-direction fields on the mesh, and the stroke fitting of
+// Chapter 6 (the `curve` kind, which needs no mesh) (doc/viewer/protocol.md).  Here:
 // the options, the mesh and the background job that provides the basis.
 
 #include "tool.h"
 #include "server.h"
 #include "tangent_vector_fields/field_kinds.h"
 #include "tangent_vector_fields/field_session.h"
+#include "spline_approximation/curve_session.h"
 
 #include <CGAL/Tangent_vector_fields/Eigenfield_basis.h>
 #include <CGAL/Tangent_vector_fields/Hodge_solver.h>
@@ -41,6 +43,8 @@ int serve_command(const Arguments& args)
       "with progress on the page) and saved there, so the precomputation is done once.  The page also\n"
       "designs n-direction fields (line fields, cross fields, ...): the basis of n-fields (N elements) is\n"
       "made when a page first asks for its n, loaded from or saved to FILE.n<n>.tvfn beside --basis.\n"
+      "The page's Session menu (or &kind=curve in the address) opens stroke fitting instead: draw a curve\n"
+      "and watch its spline's knots follow the tolerance (Chapter 6; the mesh is not used there).\n"
       "Only this machine's names (and --allow-host ones) are answered, only the page's own origin (and\n"
       "--allow-origin ones) may use it, and the WebSocket needs the token of the printed address:\n"
       "other web pages open in the browser cannot reach the session.  Stop with Ctrl-C.");
@@ -128,6 +132,7 @@ int serve_command(const Arguments& args)
                  options.web_root.c_str());
   tvf_viewer::Session_kinds kinds;
   tvf_viewer::add_field_kinds(kinds, model);
+  kinds.add(std::make_shared<tvf_viewer::Curve_kind>()); // strokes (Chapter 6): no mesh needed, never the default
   tvf_viewer::Server server(kinds, options);
   try
   {

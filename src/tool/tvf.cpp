@@ -63,7 +63,7 @@ const std::vector<Command_system>& systems()
       {"fit-motion", "a BVH motion compressed by splines within bounds in degrees and units; the report, BVH out",
        fit_motion_command}}},
     {"The viewer (every system)",
-     {{"serve", "start the interactive viewer: a local web server and page (field editing today)", serve_command}}}};
+     {{"serve", "start the interactive viewer: a local web server and page (field editing; stroke fitting)", serve_command}}}};
   return list;
 }
 
