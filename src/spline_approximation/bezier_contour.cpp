@@ -1,19 +1,39 @@
 // Copyright (c) 2026 The Spline_approximation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Bezier segments evaluated by de Casteljau, and contours sampled into polylines.
+// Bezier segments evaluated by de Casteljau, elliptical arcs by their angle, contours mapped by
+// affine maps and sampled into polylines.
 
 #include <CGAL/Spline_approximation/Bezier_contour.h>
 #include <CGAL/Spline_approximation/errors.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace CGAL {
 namespace Spline_approximation {
 
+Eigen::RowVector2d Elliptical_arc::operator()(double u) const
+{
+  const double t = start_angle + u * sweep_angle;
+  return center + std::cos(t) * axis_u + std::sin(t) * axis_v;
+}
+
+Eigen::RowVector2d Elliptical_arc::derivative(double u) const
+{
+  const double t = start_angle + u * sweep_angle;
+  return sweep_angle * (std::cos(t) * axis_v - std::sin(t) * axis_u);
+}
+
 Eigen::RowVector2d Bezier_segment::operator()(double u) const
 {
+  if(is_arc) {
+    // The stored end points at 0 and 1: cos and sin would miss them by round-off.
+    if(u == 0) return start();
+    if(u == 1) return end();
+    return arc(u);
+  }
   // de Casteljau: stable, and exact at u = 0 and u = 1 (the joints are met exactly).
   Eigen::Matrix<double, 4, 2> b = control_points;
   for(int r = 1; r <= degree; ++r)
@@ -21,11 +41,46 @@ Eigen::RowVector2d Bezier_segment::operator()(double u) const
   return b.row(0);
 }
 
+Eigen::RowVector2d Bezier_segment::start_derivative() const
+{
+  if(is_arc) return arc.derivative(0);
+  return degree * (control_points.row(1) - control_points.row(0));
+}
+
+Eigen::RowVector2d Bezier_segment::end_derivative() const
+{
+  if(is_arc) return arc.derivative(1);
+  return degree * (control_points.row(degree) - control_points.row(degree - 1));
+}
+
 bool Bezier_segment::is_point() const
 {
   for(int i = 1; i <= degree; ++i)
     if(control_points.row(i) != control_points.row(0)) return false;
-  return true;
+  return !is_arc || ((arc.axis_u.array() == 0).all() && (arc.axis_v.array() == 0).all()) || arc.sweep_angle == 0;
+}
+
+Bezier_segment Bezier_segment::transformed(const Eigen::Affine2d& m) const
+{
+  // Row-vector points: p -> p L^T + t.
+  const Eigen::Matrix2d Lt = m.linear().transpose();
+  const Eigen::RowVector2d t = m.translation().transpose();
+  Bezier_segment out = *this;
+  for(int i = 0; i <= degree; ++i) out.control_points.row(i) = control_points.row(i) * Lt + t;
+  if(is_arc) {
+    out.arc.center = arc.center * Lt + t;
+    out.arc.axis_u = arc.axis_u * Lt; // vectors: no translation
+    out.arc.axis_v = arc.axis_v * Lt;
+  }
+  return out;
+}
+
+Bezier_contour transformed(const Bezier_contour& contour, const Eigen::Affine2d& m)
+{
+  Bezier_contour out;
+  out.closed = contour.closed;
+  for(const Bezier_segment& s : contour.segments) out.segments.push_back(s.transformed(m));
+  return out;
 }
 
 Sampled_contour sample_contour(const Bezier_contour& contour, int samples_per_segment)
@@ -39,6 +94,9 @@ Sampled_contour sample_contour(const Bezier_contour& contour, int samples_per_se
       throw Invalid_input("sample_contour: a Bezier segment of degree " + std::to_string(s.degree) + " (1 to 3 expected)");
     if(!s.control_points.topRows(s.degree + 1).allFinite())
       throw Invalid_input("sample_contour: a control point is NaN or infinite");
+    if(s.is_arc && (s.degree != 1 || !s.arc.center.allFinite() || !s.arc.axis_u.allFinite() ||
+                    !s.arc.axis_v.allFinite() || !std::isfinite(s.arc.start_angle) || !std::isfinite(s.arc.sweep_angle)))
+      throw Invalid_input("sample_contour: an elliptical arc with a NaN or infinite value (or not of degree 1)");
     if(!s.is_point()) kept.push_back(&s);
   }
   const Eigen::Index m = Eigen::Index(kept.size()), q = samples_per_segment;
@@ -70,8 +128,7 @@ namespace {
 
 bool smooth_joint(const Bezier_segment& a, const Bezier_segment& b, double tolerance)
 {
-  const Eigen::RowVector2d da = a.degree * (a.control_points.row(a.degree) - a.control_points.row(a.degree - 1));
-  const Eigen::RowVector2d db = b.degree * (b.control_points.row(1) - b.control_points.row(0));
+  const Eigen::RowVector2d da = a.end_derivative(), db = b.start_derivative();
   return (da - db).norm() <= tolerance * std::max(da.norm(), db.norm());
 }
 

@@ -1,54 +1,29 @@
 // Copyright (c) 2026 The Spline_approximation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The SVG path reader: a scan of the markup for <path d="...">, and the path-data grammar of
-// SVG 1.1 (section 8.3) without arcs.  Every error names the line and column of the character
-// where the input stops making sense.
+// The SVG path reader: a scan of the markup for <path d="...">, the transforms of the path and
+// of the elements around it, and the path-data grammar of SVG 1.1 (section 8.3).  Every error
+// names the line and column of the character where the input stops making sense.
 
 #include <CGAL/Spline_approximation/Svg_paths.h>
 #include <CGAL/Spline_approximation/errors.h>
 
+#include "svg_syntax.h"
+
 #include <cctype>
 #include <cerrno>
-#include <charconv>
-#include <cmath>
 #include <cstring>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 namespace CGAL {
 namespace Spline_approximation {
 namespace {
 
-// Positions in a text, reported as "<source> line L, column C: reason" (both from 1).
-class Located_text
-{
-public:
-  Located_text(const std::string& text, const std::string& source) : text_(text), source_(source) {}
-  [[noreturn]] void fail(std::size_t offset, const std::string& reason) const
-  {
-    std::size_t line = 1, column = 1;
-    for(std::size_t i = 0; i < offset && i < text_.size(); ++i) {
-      if(text_[i] == '\n') { ++line; column = 1; }
-      else ++column;
-    }
-    throw Invalid_input(source_ + " line " + std::to_string(line) + ", column " + std::to_string(column) + ": " + reason);
-  }
-  const std::string& text() const { return text_; }
-  const std::string& source() const { return source_; }
+using namespace svg_internal;
 
-private:
-  const std::string& text_;
-  const std::string& source_;
-};
-
-bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f'; }
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
-
-std::string shown(const std::string& text, std::size_t at, std::size_t end)
-{
-  return at < end ? "'" + std::string(1, text[at]) + "'" : "the end of the path data";
-}
+const char* const end_of_path = "the end of the path data";
 
 // The path data of [begin, end) in a located text, parsed into contours.
 class Path_data_parser
@@ -68,15 +43,12 @@ public:
         if(!std::strchr("MmLlHhVvCcSsQqTtZzAa", c)) in_.fail(where, "unknown path command '" + std::string(1, c) + "'");
         if(command == 0 && c != 'M' && c != 'm')
           in_.fail(where, "path data must start with a moveto (M or m), not '" + std::string(1, c) + "'");
-        if(c == 'A' || c == 'a')
-          in_.fail(where, std::string("the elliptical arc command '") + c + "' is not supported (an arc is not a Bezier "
-                   "curve, so it has no exact truth here): convert arcs to curves first");
         command = c;
         ++at_;
       } else if(command == 0) {
-        in_.fail(where, "path data must start with a moveto (M or m), found " + shown(s_, where, end_));
+        in_.fail(where, "path data must start with a moveto (M or m), found " + shown(s_, where, end_, end_of_path));
       } else if(command == 'Z' || command == 'z') {
-        in_.fail(where, "expected a command after 'Z', found " + shown(s_, where, end_));
+        in_.fail(where, "expected a command after 'Z', found " + shown(s_, where, end_, end_of_path));
       }
       // else: an implicit repeat of the command in force
       run(command);
@@ -91,45 +63,21 @@ public:
 private:
   typedef Eigen::RowVector2d Point;
 
-  void skip_separators(bool comma_allowed)
-  {
-    while(at_ < end_ && is_space(s_[at_])) ++at_;
-    if(comma_allowed && at_ < end_ && s_[at_] == ',') {
-      ++at_;
-      while(at_ < end_ && is_space(s_[at_])) ++at_;
-    }
-  }
+  void skip_separators(bool comma_allowed) { svg_internal::skip_separators(s_, at_, end_, comma_allowed); }
 
-  // An SVG number: sign? (digits ('.' digits?)? | '.' digits) (('e'|'E') sign? digits)?
   double number(char command)
   {
     skip_separators(true);
-    const std::size_t start = at_;
-    std::size_t i = at_;
-    if(i < end_ && (s_[i] == '+' || s_[i] == '-')) ++i;
-    std::size_t digits = 0;
-    while(i < end_ && is_digit(s_[i])) { ++i; ++digits; }
-    if(i < end_ && s_[i] == '.') {
-      ++i;
-      while(i < end_ && is_digit(s_[i])) { ++i; ++digits; }
-    }
-    if(digits == 0)
-      in_.fail(start, std::string("expected a number for '") + command + "', found " + shown(s_, start, end_));
-    if(i < end_ && (s_[i] == 'e' || s_[i] == 'E')) {
-      std::size_t k = i + 1;
-      if(k < end_ && (s_[k] == '+' || s_[k] == '-')) ++k;
-      if(!(k < end_ && is_digit(s_[k])))
-        in_.fail(k, "the exponent of a number has no digits, found " + shown(s_, k, end_));
-      while(k < end_ && is_digit(s_[k])) ++k;
-      i = k;
-    }
-    const char* first = s_.data() + start + (s_[start] == '+' ? 1 : 0); // from_chars takes no '+'
-    double x = 0;
-    const std::from_chars_result r = std::from_chars(first, s_.data() + i, x);
-    if(r.ec != std::errc() || !std::isfinite(x))
-      in_.fail(start, "the number '" + s_.substr(start, i - start) + "' is out of range");
-    at_ = i;
-    return x;
+    return scan_number(in_, at_, end_, std::string("a number for '") + command + "'", end_of_path);
+  }
+
+  // An arc flag: one character, 0 or 1 (so "11" is two flags).
+  bool flag(char command, const char* which)
+  {
+    skip_separators(true);
+    if(at_ < end_ && (s_[at_] == '0' || s_[at_] == '1')) return s_[at_++] == '1';
+    in_.fail(at_, std::string("expected the ") + which + " flag (0 or 1) of '" + command + "', found " +
+                      shown(s_, at_, end_, end_of_path));
   }
 
   Point point(char command, bool relative)
@@ -142,17 +90,34 @@ private:
 
   void add(int degree, std::initializer_list<Point> points)
   {
-    if(!open_) { // a drawing command after Z starts a new subpath at the same point (SVG 1.1, 8.3.3)
-      open_ = true;
-      start_ = current_;
-    }
     Bezier_segment s;
     s.degree = degree;
     s.control_points.row(0) = current_;
     int i = 1;
     for(const Point& p : points) s.control_points.row(i++) = p;
+    add(s);
+  }
+
+  void add(const Bezier_segment& s)
+  {
+    if(!open_) { // a drawing command after Z starts a new subpath at the same point (SVG 1.1, 8.3.3)
+      open_ = true;
+      start_ = current_;
+    }
     contour_.segments.push_back(s);
     current_ = s.end();
+  }
+
+  void arc(char command, bool rel)
+  {
+    const std::size_t where = at_;
+    const double rx = number(command), ry = number(command), rotation = number(command);
+    const bool large_arc = flag(command, "large-arc"), sweep = flag(command, "sweep");
+    const Point to = point(command, rel);
+    std::string reason;
+    const std::optional<Bezier_segment> s = svg_arc(current_, to, rx, ry, rotation, large_arc, sweep, reason);
+    if(!reason.empty()) in_.fail(where, reason);
+    if(s) add(*s); // equal end points: no segment (SVG 1.1, F.6.2)
   }
 
   void end_contour(bool closed)
@@ -210,6 +175,7 @@ private:
       kind = 'Q';
       break;
     }
+    case 'A': arc(command, rel); break;
     case 'Z':
       end_contour(true);
       current_ = start_;
@@ -245,6 +211,15 @@ Svg_paths parse_svg_paths(const std::string& s, const std::string& source)
 {
   const Located_text in(s, source);
   Svg_paths out;
+  // The open elements and the transform from each one's coordinates to the document's: an
+  // element's `transform` applies to it and everything inside it, after its own children's.
+  struct Open_element
+  {
+    std::string name;
+    Eigen::Affine2d to_document;
+    bool transformed;
+  };
+  std::vector<Open_element> open_elements;
   std::size_t at = 0;
   // Skips to the end of a construct opened at `open`, or fails naming what is unterminated.
   auto skip_to = [&](std::size_t open, const char* close, const char* what) {
@@ -257,17 +232,41 @@ Svg_paths parse_svg_paths(const std::string& s, const std::string& source)
     if(starts_with(s, at, "<!--")) { skip_to(open, "-->", "comment '<!--'"); continue; }
     if(starts_with(s, at, "<![CDATA[")) { skip_to(open, "]]>", "CDATA section"); continue; }
     if(starts_with(s, at, "<?")) { skip_to(open, "?>", "processing instruction '<?'"); continue; }
-    if(starts_with(s, at, "<!") || starts_with(s, at, "</")) { skip_to(open, ">", "tag"); continue; }
+    if(starts_with(s, at, "<!")) { skip_to(open, ">", "tag"); continue; }
+    if(starts_with(s, at, "</")) { // closes the innermost open element of that name (others: tolerated)
+      std::size_t i = at + 2;
+      while(i < s.size() && !is_space(s[i]) && s[i] != '>') ++i;
+      const std::string name = s.substr(at + 2, i - at - 2);
+      skip_to(open, ">", "tag");
+      for(std::size_t k = open_elements.size(); k-- > 0;)
+        if(open_elements[k].name == name) {
+          open_elements.resize(k);
+          break;
+        }
+      continue;
+    }
     // An element's start tag: its name, then attributes up to '>' or '/>'.
     std::size_t i = at + 1;
     while(i < s.size() && !is_space(s[i]) && s[i] != '>' && s[i] != '/') ++i;
     const std::string name = s.substr(at + 1, i - at - 1);
     if(name.empty()) in.fail(open, "a '<' that starts no tag");
     const bool path = name == "path" || (name.size() > 5 && name.compare(name.size() - 5, 5, ":path") == 0);
+    Open_element element{name, Eigen::Affine2d::Identity(), false};
+    if(!open_elements.empty()) {
+      element.to_document = open_elements.back().to_document;
+      element.transformed = open_elements.back().transformed;
+    }
+    std::vector<Bezier_contour> contours;
+    bool has_d = false;
+    std::size_t d_at = 0;
     for(;;) {
       while(i < s.size() && is_space(s[i])) ++i;
       if(i >= s.size()) in.fail(open, "unterminated tag <" + name + " (no '>' before the end of the file)");
-      if(s[i] == '>' || starts_with(s, i, "/>")) { at = i + (s[i] == '>' ? 1 : 2); break; }
+      if(s[i] == '>' || starts_with(s, i, "/>")) {
+        at = i + (s[i] == '>' ? 1 : 2);
+        if(s[i] == '>') open_elements.push_back(element);
+        break;
+      }
       const std::size_t name_at = i;
       while(i < s.size() && !is_space(s[i]) && s[i] != '=' && s[i] != '>' && s[i] != '/') ++i;
       const std::string attribute = s.substr(name_at, i - name_at);
@@ -281,14 +280,31 @@ Svg_paths parse_svg_paths(const std::string& s, const std::string& source)
       const std::size_t value_begin = i + 1, value_end = s.find(s[i], value_begin);
       if(value_end == std::string::npos) in.fail(i, "unterminated value of attribute '" + attribute + "'");
       i = value_end + 1;
-      if(attribute == "transform") ++out.transforms_ignored;
+      if(attribute == "transform") {
+        element.to_document = element.to_document * parse_transform(in, value_begin, value_end);
+        element.transformed = true;
+        if(!element.to_document.matrix().allFinite())
+          in.fail(value_begin, "the transform, composed with those of the elements around it, is beyond double range");
+      }
       if(path && attribute == "d") {
+        d_at = value_begin;
         const std::size_t amp = s.find('&', value_begin);
         if(amp < value_end) in.fail(amp, "character and entity references in path data are not supported");
         Path_data_parser parser(in, value_begin, value_end);
-        for(Bezier_contour& c : parser.parse()) out.contours.push_back(std::move(c));
-        ++out.path_elements;
+        for(Bezier_contour& c : parser.parse()) contours.push_back(std::move(c));
+        has_d = true;
       }
+    }
+    if(has_d) { // the path's own transform may come after its d
+      for(Bezier_contour& c : contours) {
+        if(element.transformed) c = transformed(c, element.to_document);
+        for(const Bezier_segment& segment : c.segments)
+          if(!segment.control_points.allFinite() || !segment.arc.center.allFinite() || !segment.arc.axis_u.allFinite() ||
+             !segment.arc.axis_v.allFinite())
+            in.fail(d_at, "the path's transformed coordinates are beyond double range");
+        out.contours.push_back(std::move(c));
+      }
+      ++out.path_elements;
     }
   }
   if(out.path_elements == 0) throw Invalid_input(source + ": no <path> element with a 'd' attribute");

@@ -305,9 +305,6 @@ int fit_command(const Arguments& args)
       {
         throw Tool_error(one_line(e.what()));
       }
-      if(svg.transforms_ignored > 0)
-        warn("'" + source + "': " + std::to_string(svg.transforms_ignored) +
-             " transform attribute(s) not applied: the path coordinates are taken as written");
       curves = sample_contours(split ? split_all(svg.contours) : svg.contours, per_segment, parameters == "bezier",
                                split ? "piece" : "subpath");
       y_down = true;

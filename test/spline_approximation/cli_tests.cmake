@@ -62,26 +62,36 @@ file(WRITE ${CLI_OUT}/c2_paths.svg
      "  <path d='M 255 -3 C 272 2 286 16 288 32 S 280 66 265 72 S 230 72 215 63 S 190 42 188 31 S 192 10 205 3\n"
      "           S 238 -8 255 -3 Z'/>\n</svg>\n")
 file(WRITE ${CLI_OUT}/bad_path.svg "<svg>\n<path d=\"M 0 0 L 10 10\"/>\n  <path d=\"M 0 0 L 10 x\"/>\n</svg>\n")
-file(WRITE ${CLI_OUT}/arc_path.svg "<svg><path\n d=\"M 0 0 A 5 5 0 0 1 10 0\"/></svg>\n")
+file(WRITE ${CLI_OUT}/bad_arc_flag.svg "<svg><path\n d=\"M 0 0 A 5 5 0 0 2 10 0\"/></svg>\n")
+file(WRITE ${CLI_OUT}/bad_transform.svg "<svg>\n<g transform=\"rotate(30 1)\"><path d=\"M 0 0 L 1 1\"/></g></svg>\n")
 file(WRITE ${CLI_OUT}/open_tag.svg "<svg>\n  <path d=\"M 0 0 L 1 1\"\n")
 tvf_cli_test(fit.svg_cubic_joints success
              ARGS fit ${CLI_OUT}/c2_paths.svg --max-error 1e-9 --parameters bezier -o ${CLI_OUT}/c2_fit.json
                   -o ${CLI_OUT}/c2_fit.svg -o ${CLI_OUT}/c2_fit.obj --chart ${CLI_OUT}/c2_chart.svg
              OUTPUTS ${CLI_OUT}/c2_fit.json ${CLI_OUT}/c2_fit.svg ${CLI_OUT}/c2_fit.obj ${CLI_OUT}/c2_chart.svg
              STDOUT "2 curves \\(1 closed\\), 145 samples.*subpath 1: 49 samples, 2 knots, max error [0-9.]+e-1[0-9].*subpath 2: 96 samples, closed, 6 knots, max error [0-9.]+e-1[0-9]")
-# A transform is not applied, and said so.  Made to fail once: with the transforms not counted, no warning.
-file(WRITE ${CLI_OUT}/transformed.svg "<svg><g transform=\"scale(2)\"><path d=\"M 0 0 L 10 0 L 10 10 Z\"/></g></svg>\n")
-tvf_cli_test(fit.svg_transform_warning success ARGS fit ${CLI_OUT}/transformed.svg --degree 1 --max-error 1e-9
-             STDOUT "subpath 1: 48 samples, closed, 3 knots"
-             STDERR "1 transform attribute\\(s\\) not applied: the path coordinates are taken as written")
+# Arcs and transforms: a circle of radius 100 from two arcs, and the unit circle scaled by 100 in
+# a translated group.  Both are the same curve moved, so the same fit (knots and error); without
+# the transforms applied the second would need far fewer knots.  Made to fail once: with the
+# path's own transform skipped, subpath 2 (the unit circle) kept 3 knots, max error 0.4449.
+file(WRITE ${CLI_OUT}/circles.svg "<svg>\n  <path d=\"M 100 0 A 100 100 0 0 1 -100 0 A 100 100 0 0 1 100 0 Z\"/>\n"
+     "  <g transform=\"translate(300 0)\"><path transform=\"scale(100)\" d=\"M 1 0 a 1 1 0 0 1 -2 0 A 1 1 0 0 1 1 0 z\"/></g>\n</svg>\n")
+tvf_cli_test(fit.svg_arcs_and_transforms success
+             ARGS fit ${CLI_OUT}/circles.svg --degree 1 --max-error 0.5 --samples-per-segment 32
+             STDOUT "subpath 1: 64 samples, closed, 34 knots, max error 0\\.282752\n  subpath 2: 64 samples, closed, 34 knots, max error 0\\.282752\n")
 # Refusals with line and column.  Made to fail once: with the column restarting at 0 after a
-# newline, the three below said one column less (a column count wrong on line 1 only is caught by
+# newline, svg_bad_number, svg_unterminated_tag and the arc refusal that svg_bad_arc_flag replaced
+# said one column less (a column count wrong on line 1 only is caught by
 # the GoogleTests, not here: these errors are on later lines).  --closed with SVG: failed once with
-# its check removed (exit code 0).
+# its check removed (exit code 0).  svg_bad_arc_flag failed once with any digit taken as a flag
+# (exit code 0); svg_bad_transform with the transform's positions counted in its attribute value
+# (line 1, column 1).
 tvf_cli_test(fit.svg_bad_number failure ARGS fit ${CLI_OUT}/bad_path.svg --max-error 1
              STDERR "bad_path.svg' line 3, column 23: expected a number for 'L', found 'x'")
-tvf_cli_test(fit.svg_arc_refused failure ARGS fit ${CLI_OUT}/arc_path.svg --max-error 1
-             STDERR "arc_path.svg' line 2, column 11: the elliptical arc command 'A' is not supported")
+tvf_cli_test(fit.svg_bad_arc_flag failure ARGS fit ${CLI_OUT}/bad_arc_flag.svg --max-error 1
+             STDERR "bad_arc_flag.svg' line 2, column 21: expected the sweep flag \\(0 or 1\\) of 'A', found '2'")
+tvf_cli_test(fit.svg_bad_transform failure ARGS fit ${CLI_OUT}/bad_transform.svg --max-error 1
+             STDERR "bad_transform.svg' line 2, column 15: 'rotate' takes 1 or 3 numbers, not 2")
 tvf_cli_test(fit.svg_unterminated_tag failure ARGS fit ${CLI_OUT}/open_tag.svg --max-error 1
              STDERR "open_tag.svg' line 2, column 3: unterminated tag <path")
 tvf_cli_test(fit.svg_closed_option usage ARGS fit ${CLI_OUT}/c2_paths.svg --closed --max-error 1
