@@ -17,6 +17,8 @@
 //   7. degree 1 side by side with Douglas-Peucker and CGAL's Polyline_simplification_2 on glyph
 //      contours, SVG paths and the noisy rose, every result measured with one independent error
 //      (polyline_comparison.cpp).
+//   8. degree 1: the fewest vertices within an RMS bound against the exact optimum (dynamic
+//      programming on a grid of candidates), with and without knot relocation (optimum_gap.cpp).
 //
 // Usage: bench_spline_approximation [--sizes 1000,10000,...] [--rms 0.002] [--max-error 0.005]
 //                                   [--noise 0.0005] [--sweep-size 2000] [--tables 1234]
@@ -31,6 +33,7 @@
 
 #include <CGAL/Spline_approximation/Spline_fit.h>
 
+#include "optimum_gap.h"
 #include "polyline_comparison.h"
 
 #include <chrono>
@@ -66,11 +69,13 @@ double seconds_since(std::chrono::steady_clock::time_point t0)
 }
 
 std::size_t coarse_start_above = SA::Fit_options().coarse_start_above;
+std::size_t relocate_knots_up_to = SA::Fit_options().relocate_knots_up_to;
 
 SA::Fit_options options(int k, SA::Fit_algorithm a)
 {
   SA::Fit_options o;
   o.coarse_start_above = coarse_start_above;
+  o.relocate_knots_up_to = relocate_knots_up_to;
   o.degree = k;
   o.algorithm = a;
   return o;
@@ -125,6 +130,8 @@ int main(int argc, char** argv)
   std::vector<double> targets = {0.001, 0.005};
   Eigen::Index comparison_size = 2000;
   int samples_per_segment = 16;
+  std::size_t gap_grid = 60;
+  unsigned gap_seeds = 4;
   std::setvbuf(stdout, nullptr, _IOLBF, 0); // rows appear as they are measured, also into a file
   for(int i = 1; i < argc; ++i)
     if(std::string(argv[i]) == "--help") {
@@ -136,7 +143,9 @@ int main(int argc, char** argv)
                   "  5 motion compression, 6 a jittery motion regularised: [--motion-frames 4000] [--motion-noise 0.02]\n"
                   "  [--motion-bounds 0.1,0.5,1,2] [--bvh a.bvh,b.bvh] [--motion-algorithms greedy,penalty]\n"
                   "  7 degree 1 against Douglas-Peucker and CGAL's Polyline_simplification_2: [--svg FILE] [--targets 0.001,0.005 (fractions of the extent)] [--comparison-size 2000]\n"
-                  "  [--samples-per-segment 16] [--methods greedy,penalty,exact,dp,cgal,cgal-hybrid]\n");
+                  "  [--samples-per-segment 16] [--methods greedy,penalty,exact,dp,cgal,cgal-hybrid]\n"
+                  "  8 degree 1 vertex count against the exact optimum: [--gap-grid 60] [--gap-seeds 4]\n"
+                  "[--relocate-knots-up-to 131072] (degree 1: the knot relocation up to this many samples; 0 never)\n");
       return 0;
     }
   for(int i = 1; i + 1 < argc; i += 2) {
@@ -149,6 +158,9 @@ int main(int argc, char** argv)
     else if(a == "--tables") tables = v;
     else if(a == "--algorithms") algorithm_names = v;
     else if(a == "--coarse-start-above") coarse_start_above = std::size_t(std::atoll(v.c_str()));
+    else if(a == "--gap-grid") gap_grid = std::size_t(std::atoll(v.c_str()));
+    else if(a == "--gap-seeds") gap_seeds = unsigned(std::atoi(v.c_str()));
+    else if(a == "--relocate-knots-up-to") relocate_knots_up_to = std::size_t(std::atoll(v.c_str()));
     else if(a == "--motion-frames") motion.frames = std::atol(v.c_str());
     else if(a == "--motion-noise") motion.noise_degrees = std::atof(v.c_str());
     else if(a == "--bvh") motion.bvh_files = parse_list(v);
@@ -277,5 +289,6 @@ int main(int argc, char** argv)
     curves.push_back(std::move(rose));
     bench_spline::polyline_comparison(curves, targets, methods);
   }
+  if(table('8')) bench_spline::optimum_gap_table(gap_grid, gap_seeds);
   return 0;
 }

@@ -112,7 +112,11 @@ Spline_fit heuristic_fit(const internal::Problem& p, const internal::Goal& goal,
     for(std::size_t& i : fit.kept) i = start[i];
     return fit;
   };
-  if(std::size_t(p.candidates.size()) <= options.coarse_start_above) return run(p);
+  auto improved = [&](Spline_fit fit) {
+    if(std::size_t(p.t.size()) > options.relocate_knots_up_to) return fit;
+    return internal::relocate_and_remove(p, goal, std::move(fit));
+  };
+  if(std::size_t(p.candidates.size()) <= options.coarse_start_above) return improved(run(p));
   const std::vector<std::size_t> start = internal::coarse_start(p, goal, 0.5);
   Spline_fit fit = run_from(start);
   const std::vector<std::size_t> dense = densified_around(fit.kept, start, std::size_t(p.candidates.size()), p.closed);
@@ -120,8 +124,8 @@ Spline_fit heuristic_fit(const internal::Problem& p, const internal::Goal& goal,
     Spline_fit from_dense = run_from(dense);
     if(internal::better(from_dense, fit, goal)) fit = std::move(from_dense);
   }
-  if(goal.is_bound() && !goal.met(fit)) return run(p);
-  return fit;
+  if(goal.is_bound() && !goal.met(fit)) fit = run(p);
+  return improved(std::move(fit));
 }
 
 } // namespace

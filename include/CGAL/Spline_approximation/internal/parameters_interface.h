@@ -21,3 +21,4 @@ MR_add_named_parameter(fit_algorithm_t, fit_algorithm, fit_algorithm)
 MR_add_named_parameter(candidate_grid_size_t, candidate_grid_size, candidate_grid_size)
 // Above how many candidates the heuristics start from a coarse-to-fine knot set
 MR_add_named_parameter(coarse_start_above_t, coarse_start_above, coarse_start_above)
+MR_add_named_parameter(relocate_knots_up_to_t, relocate_knots_up_to, relocate_knots_up_to)
