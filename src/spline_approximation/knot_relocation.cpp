@@ -154,97 +154,142 @@ struct Window
   }
 };
 
+// Knots as unwrapped candidate indices ("virtual"): increasing; on a closed curve they may leave
+// [0, m) by a period (index C stands for candidate C mod m, one period, m, further on), so a
+// knot can slide across the seam.  Samples alike: index J is sample J mod n, one period on.
+typedef long long Index;
+typedef std::vector<Index> Knots;
+
+Index floor_div(Index a, Index b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
+
 class Degree_one_search
 {
 public:
-  Degree_one_search(const Problem& p) : p_(p), P_(*p.samples), D_(P_.cols()) {}
+  Degree_one_search(const Problem& p)
+    : p_(p), P_(*p.samples), D_(P_.cols()), n_(p.t.size()), m_(p.candidates.size()), closed_(p.closed)
+  {}
 
-  // First sample at or after parameter u (the last span includes t = 1).
-  Eigen::Index first_at(double u) const
+  Knots unwrapped(const std::vector<std::size_t>& kept) const { return Knots(kept.begin(), kept.end()); }
+  // Back to increasing indices in [0, m), the vertices' rows turned with them.
+  void wrap(const Knots& vk, std::vector<std::size_t>& kept, Eigen::MatrixXd& X) const
   {
-    if(u >= 1) return p_.t.size();
-    return Eigen::Index(std::lower_bound(p_.t.data(), p_.t.data() + p_.t.size(), u) - p_.t.data());
-  }
-  double node(const std::vector<std::size_t>& kept, std::ptrdiff_t i) const // i = -1: 0, kept.size(): 1
-  {
-    if(i < 0) return 0.0;
-    if(std::size_t(i) >= kept.size()) return 1.0;
-    return p_.candidates[Eigen::Index(kept[std::size_t(i)])];
+    kept.resize(vk.size());
+    for(std::size_t i = 0; i < vk.size(); ++i) kept[i] = std::size_t(vk[i] - floor_div(vk[i], m_) * m_);
+    if(!closed_) return;
+    const std::size_t first = std::size_t(std::min_element(kept.begin(), kept.end()) - kept.begin());
+    std::rotate(kept.begin(), kept.begin() + std::ptrdiff_t(first), kept.end());
+    // The vertex of knot i is row i + 1 (mod K): rows turn by the same amount.
+    Eigen::MatrixXd turned(X.rows(), X.cols());
+    for(Eigen::Index r = 0; r < X.rows(); ++r) turned.row(r) = X.row((r + Eigen::Index(first)) % X.rows());
+    X = std::move(turned);
   }
 
-  // Moments of the samples [j0, j1) about e (d = t - e about a start, e - t about an end).
-  Moments moments(Eigen::Index j0, Eigen::Index j1, double e, bool about_start) const
+  double t(Index J) const { return p_.t[Eigen::Index(J - floor_div(J, n_) * n_)] + double(floor_div(J, n_)); }
+  const double* sample(Index J) const { return &P_(Eigen::Index(J - floor_div(J, n_) * n_), 0); }
+  double candidate(Index C) const
+  {
+    return p_.candidates[Eigen::Index(C - floor_div(C, m_) * m_)] + double(floor_div(C, m_));
+  }
+  // First sample at or after parameter u (open: the last span includes t = 1).
+  Index first_at(double u) const
+  {
+    if(!closed_ && u >= 1) return n_;
+    const double period = std::floor(u);
+    const double f = u - period;
+    return Index(period) * n_ + Index(std::lower_bound(p_.t.data(), p_.t.data() + n_, f) - p_.t.data());
+  }
+  // The parameter of vertex v (v = i: knot i; open: v = -1 the start, v = K the end).
+  double node(const Knots& vk, Index v) const
+  {
+    const Index K = Index(vk.size());
+    if(!closed_) return v < 0 ? 0.0 : v >= K ? 1.0 : candidate(vk[std::size_t(v)]);
+    return candidate(vk[std::size_t(v - floor_div(v, K) * K)] + floor_div(v, K) * m_);
+  }
+  // The row of vertex v in the control points (the vertex of knot i is row i + 1, mod K closed).
+  Eigen::Index row(const Knots& vk, Index v) const
+  {
+    const Index K = Index(vk.size());
+    return Eigen::Index(closed_ ? (v + 1 - floor_div(v + 1, K) * K) : v + 1);
+  }
+  bool has_vertex(const Knots& vk, Index v) const { return closed_ || (v >= -1 && v <= Index(vk.size())); }
+
+  // Moments of the samples [J0, J1) about e (d = t - e about a start, e - t about an end).
+  Moments moments(Index J0, Index J1, double e, bool about_start) const
   {
     Moments m(D_);
-    for(Eigen::Index j = j0; j < j1; ++j) m.add(about_start ? p_.t[j] - e : e - p_.t[j], &P_(j, 0), P_.rows());
+    for(Index J = J0; J < J1; ++J) m.add(about_start ? t(J) - e : e - t(J), sample(J), P_.rows());
     return m;
+  }
+  Span_quadratic span_between(const Knots& vk, Index v) const // the span from vertex v to v + 1
+  {
+    const double a = node(vk, v), b = node(vk, v + 1);
+    return span_quadratic(moments(first_at(a), first_at(b), a, true), b - a, true);
   }
 
   // The window of knot i: vertices A (held, if any), a, u, b (free), B (held, if any); its
   // outer spans [A, a) and [b, B) filled, the two spans at the knot ([a, u), [u, b), from
   // `inner` on) left for the caller.
-  Window outer_spans(const std::vector<std::size_t>& kept, const Eigen::MatrixXd& X, std::ptrdiff_t i) const
+  Window outer_spans(const Knots& vk, const Eigen::MatrixXd& X, Index i) const
   {
-    const std::ptrdiff_t K = std::ptrdiff_t(kept.size());
     Window w;
-    if(i >= 1) { // vertex A = row i - 1
-      const double A = node(kept, i - 2), a = node(kept, i - 1);
-      w.spans.push_back(span_quadratic(moments(first_at(A), first_at(a), A, true), a - A, true));
+    if(has_vertex(vk, i - 2)) {
+      w.spans.push_back(span_between(vk, i - 2));
       w.free_at.push_back(-1);
-      w.held.push_back(X.row(i - 1));
+      w.held.push_back(X.row(row(vk, i - 2)));
     }
     for(int f = 0; f < 3; ++f) {
       w.free_at.push_back(f);
-      w.held.push_back(X.row(i + f));
+      w.held.push_back(X.row(row(vk, i - 1 + f)));
     }
-    if(i + 2 <= K) { // vertex B = row i + 3
-      const double b = node(kept, i + 1), B = node(kept, i + 2);
-      w.spans.push_back(span_quadratic(moments(first_at(b), first_at(B), b, true), B - b, true));
+    if(has_vertex(vk, i + 2)) {
+      w.spans.push_back(span_between(vk, i + 1));
       w.free_at.push_back(-1);
-      w.held.push_back(X.row(i + 3));
+      w.held.push_back(X.row(row(vk, i + 2)));
     }
-    w.inner = i >= 1 ? 1 : 0; // the two spans at the knot, set by the caller
+    w.inner = has_vertex(vk, i - 2) ? 1 : 0;
     w.spans.insert(w.spans.begin() + std::ptrdiff_t(w.inner), 2, Span_quadratic());
     return w;
   }
 
-  // One sweep: each knot moved to its best candidate between its neighbours, with its own
-  // vertex and its neighbours' re-optimised and the next ones out held (X: the vertices, row
-  // r at node r - 1).  Returns whether a knot moved.
-  bool sweep(std::vector<std::size_t>& kept, Eigen::MatrixXd& X, std::ptrdiff_t first = 0,
-             std::ptrdiff_t last = PTRDIFF_MAX) const
+  // One sweep over the knots first..last - 1: each moved to its best candidate between its
+  // neighbours, with its own vertex and its neighbours' re-optimised and the next ones out held.
+  // Returns whether a knot moved.
+  bool sweep(Knots& vk, Eigen::MatrixXd& X, Index first, Index last) const
   {
     bool moved = false;
-    const std::ptrdiff_t K = std::ptrdiff_t(kept.size());
+    const Index K = Index(vk.size());
+    if(!closed_) first = std::max<Index>(first, 0), last = std::min(last, K);
     Eigen::MatrixXd solution, best_solution;
-    for(std::ptrdiff_t i = std::max<std::ptrdiff_t>(first, 0); i < std::min(last, K); ++i) {
-      const double a = node(kept, i - 1), b = node(kept, i + 1);
-      const Eigen::Index ja = first_at(a), jb = first_at(b);
-      Window w = outer_spans(kept, X, i);
+    for(Index v = first; v < last; ++v) {
+      const Index k = closed_ ? v - floor_div(v, K) * K : v; // the knot's entry
+      const Index shift = closed_ ? floor_div(v, K) * m_ : 0; // knot v is candidate vk[k] + shift
+      const double a = node(vk, v - 1), b = node(vk, v + 1);
+      const Index ja = first_at(a), jb = first_at(b);
+      Window w = outer_spans(vk, X, v);
       const std::size_t s2 = w.inner;
       const Moments whole = moments(ja, jb, b, false);
-      const std::size_t c_first = i == 0 ? 0 : kept[std::size_t(i - 1)] + 1;
-      const std::size_t c_end = i + 1 == K ? std::size_t(p_.candidates.size()) : kept[std::size_t(i + 1)];
-      const std::size_t current = kept[std::size_t(i)];
+      const Index current = vk[std::size_t(k)] + shift;
+      const Index c_first = !closed_ && v == 0 ? 0 : prior_candidate(vk, v - 1) + 1;
+      const Index c_end = !closed_ && v + 1 == K ? m_ : prior_candidate(vk, v + 1);
       double best = std::numeric_limits<double>::infinity(), here = best;
-      std::size_t best_c = current;
+      Index best_c = current;
       // Evaluates the candidates lo, lo + stride, ... below hi, and the current one, from the
       // moments `from` (the samples before `from.j` moved left: valid for candidates from
       // `from.c` on).  Keeps, for the next level, the moments at the evaluated place before the best.
       struct Place
       {
-        std::size_t c;
-        Eigen::Index j;
+        Index c, j;
         Moments left, right;
       };
       Place start{c_first, ja, Moments(D_), whole}, before_best = start;
-      auto scan = [&](std::size_t lo, std::size_t hi, std::size_t stride, const Place& from) {
+      auto scan = [&](Index lo, Index hi, Index stride, const Place& from) {
         Place at = from, previous = from;
-        for(std::size_t c = lo; c < hi;) {
-          const double u = p_.candidates[Eigen::Index(c)];
-          for(; at.j < jb && p_.t[at.j] < u; ++at.j) {
-            at.left.add(p_.t[at.j] - a, &P_(at.j, 0), P_.rows());
-            at.right.add(b - p_.t[at.j], &P_(at.j, 0), P_.rows(), -1);
+        for(Index c = lo; c < hi;) {
+          const double u = candidate(c);
+          for(; at.j < jb && t(at.j) < u; ++at.j) {
+            const double tj = t(at.j);
+            at.left.add(tj - a, sample(at.j), P_.rows());
+            at.right.add(b - tj, sample(at.j), P_.rows(), -1);
           }
           at.c = c;
           set_span_quadratic(w.spans[s2], at.left, u - a, true);
@@ -258,26 +303,26 @@ public:
             before_best = previous;
           }
           previous = at;
-          const std::size_t next = c + stride;
+          const Index next = c + stride;
           c = (c < current && current < next) ? current : next;
         }
       };
       // Coarse to fine: at most `per_level` trials per level, each level around the best so far.
-      constexpr std::size_t per_level = 64;
-      std::size_t lo = c_first, hi = c_end;
+      constexpr Index per_level = 64;
+      Index lo = c_first, hi = c_end;
       for(Place from = start;;) {
-        const std::size_t stride = std::max<std::size_t>(1, (hi - lo + per_level - 1) / per_level);
+        const Index stride = std::max<Index>(1, (hi - lo + per_level - 1) / per_level);
         scan(lo, hi, stride, from);
         if(stride == 1) break;
-        lo = std::max(c_first, best_c >= stride ? best_c - stride + 1 : 0);
+        lo = std::max(c_first, best_c - stride + 1);
         hi = std::min(c_end, best_c + stride);
         from = before_best;
         lo = std::max(lo, from.c); // its moments hold for candidates from its own on
       }
       // Move only for a gain beyond rounding (the window's sums carry relative error ~1e-13).
       if(best_c != current && std::isfinite(best) && !(best >= here - 1e-12 * std::abs(here))) {
-        kept[std::size_t(i)] = best_c;
-        X.middleRows(i, 3) = best_solution;
+        vk[std::size_t(k)] = best_c - shift;
+        for(Eigen::Index f = 0; f < 3; ++f) X.row(row(vk, v - 1 + f)) = best_solution.row(f);
         moved = true;
       }
     }
@@ -286,21 +331,19 @@ public:
 
   // The squared error added by removing each knot, its two neighbours' vertices re-optimised
   // and the next ones out held (the same local model as the sweep).
-  std::vector<double> removal_costs(const std::vector<std::size_t>& kept, const Eigen::MatrixXd& X) const
+  std::vector<double> removal_costs(const Knots& vk, const Eigen::MatrixXd& X) const
   {
-    const std::ptrdiff_t K = std::ptrdiff_t(kept.size());
-    std::vector<double> cost(kept.size());
-    for(std::ptrdiff_t i = 0; i < K; ++i) {
-      const double a = node(kept, i - 1), u = node(kept, i), b = node(kept, i + 1);
-      const Eigen::Index ja = first_at(a), ju = first_at(u), jb = first_at(b);
-      Window w = outer_spans(kept, X, i);
+    std::vector<double> cost(vk.size());
+    for(Index i = 0; i < Index(vk.size()); ++i) {
+      const double a = node(vk, i - 1), b = node(vk, i + 1);
+      Window w = outer_spans(vk, X, i);
       const std::size_t s2 = w.inner;
-      w.spans[s2] = span_quadratic(moments(ja, ju, a, true), u - a, true);
-      w.spans[s2 + 1] = span_quadratic(moments(ju, jb, a, true), b - u, true);
+      w.spans[s2] = span_between(vk, i - 1);
+      w.spans[s2 + 1] = span_between(vk, i);
       const double with = w.minimum(nullptr);
       // Without the knot: one span from a to b, the knot's vertex gone from the chain.
       w.spans.erase(w.spans.begin() + std::ptrdiff_t(s2) + 1);
-      w.spans[s2] = span_quadratic(moments(ja, jb, a, true), b - a, true);
+      w.spans[s2] = span_quadratic(moments(first_at(a), first_at(b), a, true), b - a, true);
       const std::size_t v = s2 + 1; // the knot's vertex in the chain
       w.free_at.erase(w.free_at.begin() + std::ptrdiff_t(v));
       w.held.erase(w.held.begin() + std::ptrdiff_t(v));
@@ -310,29 +353,42 @@ public:
     return cost;
   }
 
-  // The squared error and max error of the polyline (kept, X) over the samples in [u0, u1).
-  std::pair<double, double> errors_between(const std::vector<std::size_t>& kept, const Eigen::MatrixXd& X, double u0,
-                                           double u1) const
+  // The squared error and max error of the polyline (vk, X) over the spans from vertex v0 to
+  // vertex v1 (at most one period).
+  std::pair<double, double> errors_between(const Knots& vk, const Eigen::MatrixXd& X, Index v0, Index v1) const
   {
     double total = 0, largest = 0;
-    std::ptrdiff_t span = std::ptrdiff_t(std::lower_bound(kept.begin(), kept.end(), 0, [&](std::size_t c, int) {
-                            return p_.candidates[Eigen::Index(c)] <= u0;
-                          }) - kept.begin()); // the span [node(span - 1), node(span)) holds u0
-    for(Eigen::Index j = first_at(u0), end = first_at(u1); j < end; ++j) {
-      const double t = p_.t[j];
-      while(t >= node(kept, span) && std::size_t(span) < kept.size()) ++span;
-      const double a = node(kept, span - 1), b = node(kept, span);
-      const double e = (P_.row(j) - X.row(span) - (t - a) / (b - a) * (X.row(span + 1) - X.row(span))).squaredNorm();
-      total += e;
-      largest = std::max(largest, e);
+    if(!closed_) v0 = std::max<Index>(v0, -1), v1 = std::min<Index>(v1, Index(vk.size()));
+    for(Index v = v0; v < v1; ++v) {
+      const double a = node(vk, v), b = node(vk, v + 1);
+      const auto xa = X.row(row(vk, v)), xb = X.row(row(vk, v + 1));
+      for(Index J = first_at(a), end = first_at(b); J < end; ++J) {
+        const double s = (t(J) - a) / (b - a);
+        double e = 0;
+        for(Eigen::Index k = 0; k < D_; ++k) {
+          const double r = sample(J)[k * P_.rows()] - (1 - s) * xa[k] - s * xb[k];
+          e += r * r;
+        }
+        total += e;
+        largest = std::max(largest, e);
+      }
     }
     return {total, std::sqrt(largest)};
   }
 
 private:
+  // The unwrapped candidate of knot (vertex) v.
+  Index prior_candidate(const Knots& vk, Index v) const
+  {
+    const Index K = Index(vk.size());
+    return closed_ ? vk[std::size_t(v - floor_div(v, K) * K)] + floor_div(v, K) * m_ : vk[std::size_t(v)];
+  }
+
   const Problem& p_;
   const Eigen::MatrixXd& P_;
   Eigen::Index D_;
+  Index n_, m_;
+  bool closed_;
 };
 
 // Sweeps and refits until the squared error falls by less than 1e-3 relative (later sweeps
@@ -341,9 +397,11 @@ private:
 Spline_fit relocated(const Problem& p, const Degree_one_search& search, Spline_fit fit, double lambda)
 {
   for(int round = 0; round < 8 && !fit.kept.empty(); ++round) {
-    std::vector<std::size_t> kept = fit.kept;
+    Knots vk = search.unwrapped(fit.kept);
     Eigen::MatrixXd X = fit.spline.control_points;
-    if(!search.sweep(kept, X)) break;
+    if(!search.sweep(vk, X, 0, Index(vk.size()))) break;
+    std::vector<std::size_t> kept;
+    search.wrap(vk, kept, X);
     Spline_fit next = finish(p, kept, lambda, Sample_errors::summary_only);
     const bool gain = next.squared_error < fit.squared_error * (1 - 1e-3);
     if(next.squared_error < fit.squared_error) fit = std::move(next);
@@ -352,11 +410,14 @@ Spline_fit relocated(const Problem& p, const Degree_one_search& search, Spline_f
   return fit;
 }
 
+// A closed curve's window of a knot needs five distinct vertices.
+constexpr std::size_t fewest_closed_knots = 5;
+
 } // namespace
 
 Spline_fit relocate_and_remove(const Problem& p, const Goal& goal, Spline_fit fit)
 {
-  if(p.degree != 1 || p.closed || fit.kept.empty()) return fit;
+  if(p.degree != 1 || fit.kept.empty() || (p.closed && fit.kept.size() < fewest_closed_knots)) return fit;
   const Degree_one_search search(p);
   auto acceptable = [&](const Spline_fit& f) { return goal.is_bound() ? goal.met(f) : true; };
   {
@@ -369,36 +430,55 @@ Spline_fit relocate_and_remove(const Problem& p, const Goal& goal, Spline_fit fi
   // exact where it changed.  Only a removal whose local model meets the goal is refitted
   // globally (which can only lower the squared error): a refused removal costs the samples of
   // a few spans, not a fit of all of them.
-  constexpr std::ptrdiff_t reach = 6;
+  constexpr Index reach = 6;
   const double n = double(p.t.size());
-  while(!fit.kept.empty()) {
-    const std::vector<double> cost = search.removal_costs(fit.kept, fit.spline.control_points);
+  while(fit.kept.size() > (p.closed ? fewest_closed_knots : 0)) {
+    const Knots old_vk = search.unwrapped(fit.kept);
+    const Eigen::MatrixXd& old_X = fit.spline.control_points;
+    const std::vector<double> cost = search.removal_costs(old_vk, old_X);
     std::vector<std::size_t> order(cost.size());
     std::iota(order.begin(), order.end(), std::size_t(0));
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cost[a] < cost[b]; });
     bool removed = false;
     for(std::size_t q = 0; q < order.size() && !removed; ++q) {
-      const std::ptrdiff_t i = std::ptrdiff_t(order[q]);
-      std::vector<std::size_t> kept = fit.kept;
-      kept.erase(kept.begin() + i);
-      Eigen::MatrixXd X(fit.spline.control_points.rows() - 1, fit.spline.control_points.cols());
-      X << fit.spline.control_points.topRows(i + 1), fit.spline.control_points.bottomRows(X.rows() - i - 1);
+      const Index i = Index(order[q]);
+      Knots vk = old_vk;
+      vk.erase(vk.begin() + i);
+      const Index K = Index(vk.size());
+      // The vertices without knot i's (row i + 1, mod K + 1 on a closed curve).
+      const Eigen::Index gone = search.row(old_vk, i);
+      Eigen::MatrixXd X(old_X.rows() - 1, old_X.cols());
+      for(Eigen::Index r = 0, out = 0; r < old_X.rows(); ++r)
+        if(r != gone) X.row(out++) = old_X.row(r);
+      if(p.closed && gone == 0) { // row 0 was knot K's vertex: the rest moved up by one
+        Eigen::MatrixXd turned(X.rows(), X.cols());
+        for(Eigen::Index r = 0; r < X.rows(); ++r) turned.row(r) = X.row((r + X.rows() - 1) % X.rows());
+        X = std::move(turned);
+      }
+      const Index first = i - reach, last = i + reach;
+      const bool whole = p.closed && last - first + 5 >= K; // the window wraps onto itself
       for(int pass = 0; pass < 4; ++pass)
-        if(!search.sweep(kept, X, i - reach, i + reach)) break;
-      // Knots outside [i - reach, i + reach) stayed: the change lies within these nodes.
-      const double u0 = search.node(kept, i - reach - 3), u1 = search.node(kept, i + reach + 2);
-      const auto before = search.errors_between(fit.kept, fit.spline.control_points, u0, u1);
-      const auto after = search.errors_between(kept, X, u0, u1);
+        if(!search.sweep(vk, X, whole ? 0 : first, whole ? K : last)) break;
+      // Knots outside [first, last) stayed: the change lies within vertices first - 3 .. last + 2
+      // (those after knot i one further on before the removal).
+      const Index v0 = whole ? 0 : first - 3, v1 = whole ? K : last + 2;
+      const auto before = search.errors_between(old_vk, old_X, v0, whole ? K + 1 : v1 + 1);
+      const auto after = search.errors_between(vk, X, v0, v1);
       const double squared = fit.squared_error - before.first + after.first;
       const bool promising = goal.max_error  ? after.second <= *goal.max_error
                              : goal.rms_error ? squared <= *goal.rms_error * *goal.rms_error * n
-                                              : squared + goal.lambda * double(kept.size()) < fit.objective;
+                                              : squared + goal.lambda * double(K) < fit.objective;
       if(!promising) continue;
-      Spline_fit trial = relocated(p, search, finish(p, kept, goal.lambda, Sample_errors::summary_only), goal.lambda);
-      if(goal.is_bound() ? goal.met(trial) : trial.objective < fit.objective) {
-        fit = std::move(trial);
-        removed = true;
-      }
+      std::vector<std::size_t> kept;
+      search.wrap(vk, kept, X);
+      // The refit first (a max bound may fail where the local model met it: the refit moves
+      // every vertex a little), the sweeps over all knots only for a removal that holds.
+      auto holds = [&](const Spline_fit& f) { return goal.is_bound() ? goal.met(f) : f.objective < fit.objective; };
+      Spline_fit trial = finish(p, kept, goal.lambda, Sample_errors::summary_only);
+      if(!holds(trial)) continue;
+      Spline_fit moved = relocated(p, search, trial, goal.lambda);
+      fit = holds(moved) ? std::move(moved) : std::move(trial);
+      removed = true;
     }
     if(!removed) break;
   }

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Knot relocation for degree 1 (Fit_options::relocate_knots_up_to): misplaced knots slide onto
-// a polyline's true corners (known by construction), knots are removed only while the bound
+// a polyline's true corners (known by construction; open, and closed across the seam), knots are removed only while the bound
 // holds, and the vertex counts come within one of the exact optimum (the dynamic programming,
 // itself checked against brute force in test_exact_optimum.cpp).
 
@@ -66,6 +66,43 @@ TEST(KnotRelocation, MisplacedKnotsSlideOntoTheCorners)
     ASSERT_GT(before.max_error, 1e-3); // the start is visibly off
     const SA::Spline_fit after = SA::internal::relocate_and_remove(p, goal, before);
     EXPECT_EQ(after.kept, (std::vector<std::size_t>{22, 50, 77}));
+    EXPECT_LT(after.max_error, 1e-10);
+  }
+}
+
+// A closed polygon sampled at t = j / 1000 with corners at 0.03, 0.25, 0.45, 0.62 and 0.81
+// (grid i / 100); the start has each knot a few candidates off, the first across the seam
+// (0.97 for 0.03), and one more.  With a small penalty the answer is the corners.
+TEST(KnotRelocation, ClosedCurveKnotsSlideAcrossTheSeam)
+{
+  const std::vector<double> corner = {0.03, 0.25, 0.45, 0.62, 0.81};
+  Eigen::MatrixXd V(5, 2);
+  V << 1.0, 0.1, 0.4, 1.2, -0.8, 0.9, -1.1, -0.3, 0.2, -1.0;
+  const Eigen::Index n = 1000;
+  Eigen::MatrixXd P(n, 2);
+  for(Eigen::Index j = 0; j < n; ++j) {
+    const double t = double(j) / double(n);
+    std::size_t k = 4; // the side from corner k to corner k + 1 (mod 5) holds t
+    for(std::size_t c = 0; c < 5; ++c)
+      if(t >= corner[c]) k = c;
+    const double from = corner[k], to = k == 4 ? corner[0] + 1 : corner[k + 1];
+    const double s = ((t < from ? t + 1 : t) - from) / (to - from);
+    P.row(j) = (1 - s) * V.row(Eigen::Index(k)) + s * V.row(Eigen::Index((k + 1) % 5));
+  }
+  SA::internal::Problem p;
+  p.samples = &P;
+  p.t = Eigen::VectorXd::LinSpaced(n, 0.0, double(n - 1) / double(n));
+  p.degree = 1;
+  p.closed = true;
+  p.candidates = Eigen::VectorXd::LinSpaced(100, 0.0, 0.99);
+  SA::internal::Goal goal;
+  goal.lambda = 1e-6;
+  for(const std::vector<std::size_t>& start :
+      {std::vector<std::size_t>{22, 48, 60, 83, 97}, std::vector<std::size_t>{5, 20, 30, 47, 64, 79}}) {
+    const SA::Spline_fit before = SA::internal::finish(p, start, goal.lambda);
+    ASSERT_GT(before.max_error, 1e-3);
+    const SA::Spline_fit after = SA::internal::relocate_and_remove(p, goal, before);
+    EXPECT_EQ(after.kept, (std::vector<std::size_t>{3, 25, 45, 62, 81}));
     EXPECT_LT(after.max_error, 1e-10);
   }
 }
