@@ -1,17 +1,17 @@
 // Copyright (c) 2026 The Spline_approximation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Knot relocation and removal for open polylines (degree 1): the local search that takes the
-// heuristics' answers to within a few percent of the dynamic programming optimum.
+// Knot relocation and removal for polylines (degree 1, open or closed): the local search that
+// takes the heuristics' answers to within a few percent of the dynamic programming optimum.
 //
 // Removal alone cannot move a knot: a knot kept because its neighbours sit a little off the
 // data's corners stays kept.  Here every knot slides, one at a time, to the candidate between
 // its neighbours where the squared error is least with the two neighbouring vertices held
 // (its own vertex optimal in closed form); a least-squares refit of all vertices follows each
 // sweep.  Both steps can only lower the squared error.  A knot is then removed, the one whose
-// removal costs least with its neighbours held, the rest slide again, and the removal is kept
-// if the goal allows it (the bound still met, or the objective lower); a few next-cheapest are
-// tried before giving up.
+// removal costs least with its neighbours re-optimised, judged on a local model first, then
+// refitted, and kept if the goal allows it (the bound still met, or the objective lower); the
+// next-cheapest are tried before giving up.
 //
 // A sweep reads each sample of a knot's two spans once: the moments of the left span (about
 // its left end) grow as the trial knot moves right, those of the right span (about its right

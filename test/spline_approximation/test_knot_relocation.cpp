@@ -2,9 +2,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Knot relocation for degree 1 (Fit_options::relocate_knots_up_to): misplaced knots slide onto
-// a polyline's true corners (known by construction; open, and closed across the seam), knots are removed only while the bound
-// holds, and the vertex counts come within one of the exact optimum (the dynamic programming,
-// itself checked against brute force in test_exact_optimum.cpp).
+// a polyline's true corners (known by construction; open, and closed across the seam), knots
+// are removed only while the bound holds, and the vertex counts come within one of the exact
+// optimum (the dynamic programming, itself checked against brute force in
+// test_exact_optimum.cpp).
 
 #include <CGAL/Spline_approximation/Spline_fit.h>
 #include <CGAL/Spline_approximation/internal/spline_numerics.h>
@@ -124,7 +125,8 @@ TEST(KnotRelocation, KeepsTheBoundAndNeverAddsKnots)
         const SA::Spline_fit alone = SA::fit_spline(P, o);
         o.relocate_knots_up_to = SIZE_MAX;
         const SA::Spline_fit relocated = SA::fit_spline(P, o);
-        SCOPED_TRACE(std::string(SA::algorithm_name(a)) + (max_bound ? " max" : " rms") + " seed " + std::to_string(seed));
+        SCOPED_TRACE(std::string(SA::algorithm_name(a)) + (max_bound ? " max" : " rms") + " seed " +
+                     std::to_string(seed));
         ASSERT_TRUE(alone.within_bound);
         EXPECT_TRUE(relocated.within_bound);
         EXPECT_LE(relocated.number_of_knots(), alone.number_of_knots());

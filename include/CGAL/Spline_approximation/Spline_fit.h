@@ -55,11 +55,11 @@ struct Fit_options
   /// exceeds lambda / 4).  Cost O(n log n) instead of O(n) fits of n knots; the knots of data
   /// that is exactly a spline on a few candidates are still found.  0: always; `SIZE_MAX`: never.
   std::size_t coarse_start_above = 4096;
-  /// Degree 1, open curves, up to this many samples: the heuristics' answer is improved by a
-  /// local search that slides each knot to the candidate between its neighbours where the
-  /// squared error is least, and removes knots while the goal allows (`knot_relocation.cpp`).
-  /// It brings the vertex count within a few percent of the dynamic programming optimum, at
-  /// about 10-20 times the heuristic's time.  0: never; `SIZE_MAX`: always.
+  /// Degree 1 (open and closed curves), up to this many samples: the heuristics' answer is
+  /// improved by a local search that slides each knot to the candidate between its neighbours
+  /// where the squared error is least, and removes knots while the goal allows
+  /// (`knot_relocation.cpp`).  It brings the vertex count within a few percent of the dynamic
+  /// programming optimum, at 5-20 times the heuristic's time.  0: never; `SIZE_MAX`: always.
   std::size_t relocate_knots_up_to = std::size_t(1) << 17;
   /// Fit a closed curve: the last sample joins the first (do not repeat it), chord length
   /// includes that closing segment, and the spline is periodic (`B_spline::closed`).  Penalty

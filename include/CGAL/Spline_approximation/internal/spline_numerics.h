@@ -200,8 +200,9 @@ Spline_fit penalty_decomposition(const Problem& p, double lambda);
 Spline_fit greedy_removal(const Problem& p, const Goal& goal, const std::vector<std::size_t>* start = nullptr);
 Spline_fit dynamic_programming(const Problem& p, const Goal& goal); // degree 1
 Spline_fit brute_force(const Problem& p, const Goal& goal);
-// Degree 1, open curves: knots slid to better candidates and removed while the goal allows
-// (knot_relocation.cpp); other problems are returned as they are.
+// Degree 1: knots slid to better candidates and removed while the goal allows
+// (knot_relocation.cpp); other degrees, and closed curves of fewer than five knots, are
+// returned as they are.
 Spline_fit relocate_and_remove(const Problem& p, const Goal& goal, Spline_fit fit);
 
 } // namespace internal
