@@ -141,6 +141,18 @@ std::string text_member(const Json& tree, const char* key)
   return node.get<std::string>();
 }
 
+void read_request(Request& r, const std::string& text, int max_depth)
+{
+  r.tree = TVF::internal::parse_json(text, "not JSON", max_depth);
+  if(!r.tree.is_object()) throw Message_error("a message must be a JSON object");
+  if(r.tree.contains("request"))
+  {
+    r.id = integer_member(r.tree, "request", 0, (1LL << 53));
+    r.has_id = true;
+  }
+  r.type = text_member(r.tree, "type");
+}
+
 Outgoing binary_refusal(std::size_t bytes)
 {
   return {false, "{\"type\":\"error\",\"message\":" +

@@ -66,6 +66,26 @@ double number_member(const Json& tree, const char* key);
 long long integer_member(const Json& tree, const char* key, long long lowest, long long highest);
 std::string text_member(const Json& tree, const char* key);
 
+/// A page's message being answered: its JSON, its type, its request id (echoed in every
+/// answer), when it arrived, and the way back.  Session kinds share it.
+struct Request
+{
+  Json tree;
+  std::string type;
+  bool has_id = false;
+  long long id = 0;
+  Clock::time_point received;
+  const Send* send = nullptr;
+
+  std::string echo() const { return has_id ? ",\"request\":" + std::to_string(id) : std::string(); }
+  /// Sends `{members, "request": id}`.
+  void text(const std::string& members) const { (*send)(Outgoing{false, "{" + members + echo() + "}"}); }
+};
+
+/// Reads a message's JSON (strict: syntax, duplicate keys and nesting deeper than `max_depth`
+/// refused while parsing), its request id and type into `r`; `Message_error` names what is wrong.
+void read_request(Request& r, const std::string& text, int max_depth);
+
 /// The `error` messages of the transport: a binary message (the page sends JSON text) and a
 /// message over `limit` bytes.
 Outgoing binary_refusal(std::size_t bytes);

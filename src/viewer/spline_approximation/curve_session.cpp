@@ -18,19 +18,6 @@ namespace tvf_viewer {
 
 namespace SA = CGAL::Spline_approximation;
 
-/// A message being answered: its JSON, its request id (echoed), the way back.
-struct Curve_session::Request
-{
-  Json tree;
-  std::string type;
-  bool has_id = false;
-  long long id = 0;
-  Clock::time_point received;
-  const Send* send = nullptr;
-
-  std::string echo() const { return has_id ? ",\"request\":" + std::to_string(id) : std::string(); }
-  void text(const std::string& members) const { (*send)(Outgoing{false, "{" + members + echo() + "}"}); }
-};
 
 namespace {
 
@@ -117,14 +104,7 @@ void Curve_session::handle_text(const std::string& text, const Send& send)
   try
   {
     if(text.size() > limits_.max_message_bytes) return send(oversized_refusal(text.size(), limits_.max_message_bytes));
-    r.tree = TVF::internal::parse_json(text, "not JSON", limits_.max_json_depth);
-    if(!r.tree.is_object()) throw Message_error("a message must be a JSON object");
-    if(r.tree.contains("request"))
-    {
-      r.id = integer_member(r.tree, "request", 0, (1LL << 53));
-      r.has_id = true;
-    }
-    r.type = text_member(r.tree, "type");
+    read_request(r, text, limits_.max_json_depth);
     // The members each message may have: a misspelt one is refused, by name.
     static const std::vector<const char*> settings = {"degree", "error", "tolerance", "algorithm", "closed"};
     static const std::map<std::string, std::vector<const char*>> members = {

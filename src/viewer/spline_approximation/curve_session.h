@@ -43,6 +43,8 @@ struct Curve_settings
 };
 
 /// One page's stroke and its fit.
+struct Request; // messages.h
+
 class Curve_session : public Session
 {
 public:
@@ -57,7 +59,6 @@ public:
   const Curve_settings& settings() const { return settings_; }
 
 private:
-  struct Request;
   void hello(Request& r);
   void take_stroke(Request& r);
   void refit(Request& r);

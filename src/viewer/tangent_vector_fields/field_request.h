@@ -13,26 +13,12 @@
 
 namespace tvf_viewer {
 
-/// A message being answered: its JSON, its request id (echoed), the way back.
-struct Field_session::Request
+/// A message being answered (the viewer's shared `Request`), with what the field session adds.
+struct Field_session::Request : tvf_viewer::Request
 {
-  Json tree;
-  std::string type;
-  bool has_id = false;
-  long long id = 0;
-  Clock::time_point received;
-  const Send* send = nullptr;
   // Time the reduced solver spent on the edit itself (a new row's pull-back in the basis),
   // added to the solve time of the field message.
   double reduced_ms = 0;
-
-  std::string echo() const { return has_id ? ",\"request\":" + std::to_string(id) : std::string(); }
-  void text(const std::string& members) const
-  {
-    Outgoing out;
-    out.data = "{" + members + echo() + "}";
-    (*send)(out);
-  }
 };
 
 } // namespace tvf_viewer

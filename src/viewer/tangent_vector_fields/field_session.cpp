@@ -59,15 +59,7 @@ void Field_session::handle_text(const std::string& text, const Send& send)
   {
     if(text.size() > model_->limits().max_message_bytes)
       return send(oversized_refusal(text.size(), model_->limits().max_message_bytes));
-    // Strict: syntax, duplicate keys and deep nesting are refused while parsing.
-    request.tree = TVF::internal::parse_json(text, "not JSON", model_->limits().max_json_depth);
-    if(!request.tree.is_object()) throw Message_error("a message must be a JSON object");
-    if(request.tree.contains("request"))
-    {
-      request.id = integer_member(request.tree, "request", 0, (1LL << 53));
-      request.has_id = true;
-    }
-    request.type = text_member(request.tree, "type");
+    read_request(request, text, model_->limits().max_json_depth);
     dispatch(request);
   }
   catch(const Message_error& e)
