@@ -6,9 +6,10 @@
 // cantilever, a grabbed end lifted), one OBJ or VTP file per frame (VTP with a ParaView .pvd
 // series).
 
+#include "frame_writer.h"
 #include "tool.h"
 
-#include <CGAL/Model_reduction/Vtk_polydata.h>
+#include <CGAL/Model_reduction/errors.h>
 #include <CGAL/Projective_dynamics/Reduced_simulator.h>
 #include <CGAL/Projective_dynamics/Simulator.h>
 #include <CGAL/Projective_dynamics/make_models.h>
@@ -19,7 +20,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <stdexcept>
 #include <type_traits>
 #include <vector>
@@ -141,67 +141,6 @@ Scene make_scene(const std::string& name, const PD::Positions& rest)
   return s;
 }
 
-class Frame_writer
-{
-public:
-  Frame_writer(std::string folder, std::string format, std::vector<PD::Triangle> surface, double time_step)
-    : folder_(std::move(folder)), format_(std::move(format)), surface_(std::move(surface)), time_step_(time_step)
-  {
-    if(folder_.empty()) return;
-    std::error_code error;
-    std::filesystem::create_directories(folder_, error);
-    if(error) throw Tool_error("cannot make the folder '" + folder_ + "': " + error.message());
-  }
-  void write(int frame, const PD::Positions& q)
-  {
-    if(folder_.empty()) return;
-    char name[32];
-    std::snprintf(name, sizeof name, "frame_%04d.%s", frame, format_.c_str());
-    const std::string path = folder_ + "/" + name;
-    std::ofstream out(path);
-    if(!out) throw Tool_error("cannot open '" + path + "' for writing");
-    MR::internal::prepare_exact_output(out);
-    if(format_ == "obj")
-    {
-      for(Eigen::Index v = 0; v < q.rows(); ++v) out << "v " << q(v, 0) << ' ' << q(v, 1) << ' ' << q(v, 2) << '\n';
-      for(const PD::Triangle& t : surface_) out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
-    }
-    else
-    {
-      MR::Vtk_polydata data;
-      data.points.resize(std::size_t(q.rows()));
-      for(Eigen::Index v = 0; v < q.rows(); ++v) data.points[std::size_t(v)] = {q(v, 0), q(v, 1), q(v, 2)};
-      for(const PD::Triangle& t : surface_) data.polygons.push_back({t[0], t[1], t[2]});
-      MR::write_vtk_polydata(out, data);
-    }
-    out.close();
-    if(!out) throw Tool_error("writing '" + path + "' failed");
-    names_.push_back(name);
-  }
-  // The ParaView series (VTP frames): one file listing every frame at its time.
-  std::string finish() const
-  {
-    if(folder_.empty() || format_ != "vtp") return std::string();
-    const std::string path = folder_ + "/frames.pvd";
-    std::ofstream out(path);
-    MR::internal::prepare_exact_output(out);
-    out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n";
-    for(std::size_t i = 0; i < names_.size(); ++i)
-      out << "    <DataSet timestep=\"" << double(i) * time_step_ << "\" file=\"" << names_[i] << "\"/>\n";
-    out << "  </Collection>\n</VTKFile>\n";
-    out.close();
-    if(!out) throw Tool_error("writing '" + path + "' failed");
-    return path;
-  }
-  std::size_t count() const { return names_.size(); }
-
-private:
-  std::string folder_, format_;
-  std::vector<PD::Triangle> surface_;
-  double time_step_;
-  std::vector<std::string> names_;
-};
-
 double percentile(std::vector<double> v, double p)
 {
   if(v.empty()) return 0;
@@ -283,7 +222,7 @@ int simulate_command(const Arguments& args)
       "vertices grabbed and lifted by 0.3 of the length over the run).  Full PD by default; --reduced for\n"
       "hyper-reduced PD (its sizes capped to what the mesh allows; --save and --load keep its\n"
       "precomputation with the body's identity).  Prints the step time (local and global)\n"
-      "and what the scene moved; -o writes frame_0000.obj ... (or .vtp with a ParaView frames.pvd series).");
+      "and what the scene moved; -o writes frame_0000.obj ... (.ply, or .vtp with a ParaView frames.pvd series).");
   command.positional("body", "a Medit .mesh file (a solid) or a surface mesh (a shell)");
   command.group("scene").add_options()
     ("scene", po::value<std::string>()->value_name("S")->default_value("drop"), "drop, cantilever or grab")
@@ -316,12 +255,13 @@ int simulate_command(const Arguments& args)
      "instead of precomputing: load one saved for this body with the same reduction options");
   command.group("output").add_options()
     ("output,o", po::value<std::string>()->value_name("FOLDER"), "write one file per frame into FOLDER")
-    ("format", po::value<std::string>()->value_name("F")->default_value("obj"), "obj, or vtp (with frames.pvd)");
+    ("format", po::value<std::string>()->value_name("F")->default_value("obj"), "obj, ply, or vtp (with frames.pvd)");
   if(!command.parse(args)) return 0; // --help
   const std::string scene_name = command.get<std::string>("scene"), format = command.get<std::string>("format");
   if(scene_name != "drop" && scene_name != "cantilever" && scene_name != "grab")
     throw Usage_error("'--scene' must be drop, cantilever or grab, not '" + scene_name + "'");
-  if(format != "obj" && format != "vtp") throw Usage_error("'--format' must be obj or vtp, not '" + format + "'");
+  if(!Frame_writer::known_format(format))
+    throw Usage_error("'--format' must be obj, ply or vtp, not '" + format + "'");
   if((command.has("save") || command.has("load")) && !command.has("reduced"))
     throw Usage_error("'--save' and '--load' keep the hyper-reduced precomputation: give '--reduced'");
   const int frames = command.get<int>("frames");

@@ -77,8 +77,11 @@ int render_command(const Arguments&);
 int streamlines_command(const Arguments&);
 int export_command(const Arguments&);
 int serve_command(const Arguments&);
-// Vibration modes (commands_vibration_modes.cpp).
+// Vibration modes (commands_vibration_modes.cpp, commands_mode_segmentation.cpp,
+// commands_mode_simulation.cpp).
 int modes_command(const Arguments&);
+int segment_command(const Arguments&);
+int vibrate_command(const Arguments&);
 int fit_command(const Arguments&);
 // Motion capture compression (commands_motion.cpp).
 int fit_motion_command(const Arguments&);

@@ -41,10 +41,9 @@ string(APPEND box "End\n")
 file(WRITE ${CLI_OUT}/box.mesh "${box}")
 file(WRITE ${CLI_OUT}/broken_box.mesh "MeshVersionFormatted 1\nDimension 3\nVertices\n4\n0 0 0 0\n1 0 0 0\n0 1 0 0\n")
 
-set(PD_TESTS ${PROJECT_SOURCE_DIR}/test/projective_dynamics)
 function(pd_frame_check name fixture file)
   add_test(NAME cli.simulate.${name}.frame
-           COMMAND ${CMAKE_COMMAND} -DFILE=${file} ${ARGN} -P ${PD_TESTS}/check_frame.cmake)
+           COMMAND ${CMAKE_COMMAND} -DFILE=${file} ${ARGN} -P ${PROJECT_SOURCE_DIR}/test/support/check_frame.cmake)
   set_tests_properties(cli.simulate.${name}.frame PROPERTIES FIXTURES_REQUIRED ${fixture} LABELS cli)
 endfunction()
 

@@ -1,8 +1,9 @@
-# Checks one OBJ frame written by `tvf simulate`, read here independently of the simulator:
+# Checks one OBJ frame written by `tvf simulate` or `tvf vibrate`, read here independently of
+# the simulators:
 #   cmake -DFILE=frame.obj [-DVERTEX_COUNT=n] [-DMIN_Z_AT_LEAST=a] [-DMIN_Z_AT_MOST=b]
-#         [-DVERTICES=i:x:y:z;...] -P check_frame.cmake
-# MIN_Z_*: bounds on the lowest z of the frame; VERTICES: 1-based vertex i must be exactly at
-# (x, y, z) (hard pins keep their rest positions to the last bit).
+#         [-DMAX_Z_AT_MOST=c] [-DVERTICES=i:x:y:z;...] -P check_frame.cmake
+# MIN_Z_*: bounds on the lowest z of the frame, MAX_Z_AT_MOST on the highest; VERTICES: 1-based
+# vertex i must be exactly at (x, y, z) (hard pins keep their rest positions to the last bit).
 if(NOT EXISTS "${FILE}")
   message(FATAL_ERROR "no frame file '${FILE}'")
 endif()
@@ -15,11 +16,15 @@ if(DEFINED VERTEX_COUNT AND NOT count EQUAL VERTEX_COUNT)
   message(FATAL_ERROR "'${FILE}' has ${count} vertices, expected ${VERTEX_COUNT}")
 endif()
 set(lowest "")
+set(highest "")
 foreach(line IN LISTS lines)
   string(REPLACE " " ";" words "${line}")
   list(GET words 3 z)
   if(lowest STREQUAL "" OR z LESS lowest)
     set(lowest ${z})
+  endif()
+  if(highest STREQUAL "" OR z GREATER highest)
+    set(highest ${z})
   endif()
 endforeach()
 if(DEFINED MIN_Z_AT_LEAST AND lowest LESS MIN_Z_AT_LEAST)
@@ -27,6 +32,9 @@ if(DEFINED MIN_Z_AT_LEAST AND lowest LESS MIN_Z_AT_LEAST)
 endif()
 if(DEFINED MIN_Z_AT_MOST AND lowest GREATER MIN_Z_AT_MOST)
   message(FATAL_ERROR "the lowest vertex is at z = ${lowest}, above ${MIN_Z_AT_MOST}")
+endif()
+if(DEFINED MAX_Z_AT_MOST AND highest GREATER MAX_Z_AT_MOST)
+  message(FATAL_ERROR "the highest vertex is at z = ${highest}, above ${MAX_Z_AT_MOST}")
 endif()
 foreach(expected IN LISTS VERTICES)
   string(REPLACE ":" ";" fields "${expected}")
@@ -37,9 +45,12 @@ foreach(expected IN LISTS VERTICES)
   foreach(axis 1 2 3)
     list(GET words ${axis} value)
     list(GET fields ${axis} want)
+    if(NOT want MATCHES "^-?[0-9.]+([eE][-+]?[0-9]+)?$" OR NOT value MATCHES "^-?[0-9.]+([eE][-+]?[0-9]+)?$")
+      message(FATAL_ERROR "vertex ${index}: '${value}' or the expected '${want}' is not a number")
+    endif()
     if(NOT value EQUAL want) # compared as numbers
       message(FATAL_ERROR "vertex ${index}: coordinate ${axis} is ${value}, expected ${want}")
     endif()
   endforeach()
 endforeach()
-message(STATUS "'${FILE}': ${count} vertices, lowest z = ${lowest}")
+message(STATUS "'${FILE}': ${count} vertices, lowest z = ${lowest}, highest z = ${highest}")
