@@ -132,6 +132,17 @@ async function run() {
     await sleep(500);
     const readout = await page.locator('#sim-readout').textContent();
     check(/frame time \d+\.\d ms · simulation \d+\.\d ms per frame/.test(readout), `the readout: "${readout}"`);
+    // --- The Body menu: the solid the sphere bounds (Mesh_3), simulated and falling again ---
+    await page.selectOption('#sim-mode', 'solid');
+    await sim(() => window.tvfSimulation.idle());
+    const solid = await sim(() => window.tvfSimulation.info());
+    const solidFrames = await sim(() => window.tvfSimulation.frames());
+    await sleep(1000);
+    const landed = await sim(() => window.tvfSimulation.lastFrame());
+    check(solid.body.mode === 'solid' && solid.body.elements > 100 &&
+      (await sim(() => window.tvfSimulation.frames())) > solidFrames + 10 &&
+      Math.abs(lowestZ(landed.positions) - solid.floor) < 0.05 * solid.diagonal,
+    `the Body menu made a solid of ${solid.body.elements} tetrahedra, which fell onto the floor`);
     const status = await page.locator('#status').getAttribute('class');
     check(problems.length === 0 && !status.includes('error'),
       `no errors in the page${problems.length ? ': ' + problems.join('; ') : ''}`);

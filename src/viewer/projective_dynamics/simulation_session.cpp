@@ -272,7 +272,6 @@ void Simulation_session::grab(Request& r)
   grab_offset_ = q.row(s) - drawn_.row(v);
   stepper.grab(s, target + grab_offset_);
   grabbed_ = v;
-  grabbed_simulated_ = s;
 }
 
 void Simulation_session::poke(Request& r)

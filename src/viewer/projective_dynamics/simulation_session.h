@@ -66,7 +66,6 @@ private:
   long long steps_ = 0;
   double time_ = 0, time_step_ = 1.0 / 60;
   std::optional<int> grabbed_;             ///< the surface vertex held
-  int grabbed_simulated_ = -1;             ///< the simulator's vertex that holds it
   Eigen::RowVector3d grab_offset_ = Eigen::RowVector3d::Zero(); ///< simulated minus surface vertex
   PD::Positions drawn_;                    ///< the surface now
   Clock::time_point next_due_, last_frame_;

@@ -36,6 +36,14 @@ export class SimulationSession {
     $('sim-play').addEventListener('click', () => this.send({ type: this.state?.playing ? 'pause' : 'play' }));
     $('sim-reset').addEventListener('click', () => this.send({ type: 'reset' }));
     $('sim-drop').addEventListener('click', () => this.send({ type: 'drop' }));
+    // Another body or simulator: a new hello builds it (the server keeps the old one if refused).
+    const rebuild = () => {
+      this.line.status('building the body…');
+      this.send({ type: 'hello', kind: 'simulation', mode: $('sim-mode').value, simulator: $('sim-simulator').value })
+        .catch(() => this.showBody());
+    };
+    $('sim-mode').addEventListener('change', rebuild);
+    $('sim-simulator').addEventListener('change', rebuild);
     const slider = $('sim-stiffness');
     slider.addEventListener('input', () => {
       const value = this.sliderToStiffness(Number(slider.value));
@@ -109,9 +117,20 @@ export class SimulationSession {
     return best;
   }
 
+  // The selects show the body the server holds (after a refusal: the one it kept).
+  showBody() {
+    if (!this.info) return;
+    $('sim-mode').value = this.info.body.mode;
+    $('sim-simulator').value = this.info.body.fallback ? 'reduced' : this.info.body.simulator;
+  }
+
   onText(message) {
     if (message.type === 'info') {
       this.info = message;
+      this.averages = { simulation: NaN, interval: NaN, arrival: NaN }; // a new body: its own times
+      this.late = 0;
+      this.showBody();
+      $('sim-mode').disabled = !message.mesh.closed;
       const b = message.body;
       $('sim-body').textContent = `${message.mesh.name}: a ${b.mode} of ${b.vertices} vertices, ${b.elements} ` +
         `${b.mode === 'solid' ? 'tetrahedra' : 'triangles'}; ` +
