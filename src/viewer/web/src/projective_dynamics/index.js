@@ -19,6 +19,11 @@ function installHook({ connection, session, viewer }) {
       const rect = viewer.canvas.getBoundingClientRect();
       return { x: rect.left + p.x, y: rect.top + p.y };
     },
+    // The vertex a press at client (x, y) would grab (null: not on the body).
+    vertexAt: (x, y) => {
+      const hit = viewer.pick(x, y);
+      return hit ? session.nearestCorner(hit) : null;
+    },
     log: () => session.log.slice(),
     camera: () => viewer.camera.position.toArray(),
     // The last target a drag sent.
