@@ -15,6 +15,7 @@
 #include <CGAL/Projective_dynamics/make_models.h>
 #include <CGAL/Projective_dynamics/medit_io.h>
 #include <CGAL/Projective_dynamics/tetrahedralize.h>
+#include <CGAL/Projective_dynamics/internal/scene_setup.h>
 
 #include <algorithm>
 #include <cmath>
@@ -31,21 +32,7 @@ namespace MR = CGAL::Model_reduction;
 
 namespace {
 
-struct Body
-{
-  Body(PD::Elastic_model m, std::vector<PD::Triangle> s, bool is_solid, int element_count)
-    : model(std::move(m)), surface(std::move(s)), solid(is_solid), elements(element_count)
-  {}
-  PD::Elastic_model model;
-  std::vector<PD::Triangle> surface; // what the frames show
-  bool solid;
-  int elements;
-  // A surface mesh filled with tetrahedra: its vertices in them (the frames show the surface).
-  bool embedded = false;
-  PD::Surface_embedding embedding;
-  // The frames' vertices for the simulator's positions.
-  PD::Positions drawn(const PD::Positions& q) const { return embedded ? embedding.embed(q) : q; }
-};
+using Body = PD::internal::Simulated_body;
 
 Body read_body(const std::string& path, const Command_line& command)
 {
@@ -67,33 +54,28 @@ Body read_body(const std::string& path, const Command_line& command)
     for(int v = 0; v < m.number_of_vertices(); ++v) points[std::size_t(v)] = m.position(v);
     std::vector<PD::Triangle> triangles(std::size_t(m.number_of_faces()));
     for(int f = 0; f < m.number_of_faces(); ++f) triangles[std::size_t(f)] = m.face_vertices(f);
-    if(command.has("solid"))
+    PD::internal::Body_material material;
+    material.stiffness = stiffness;
+    material.density = density;
+    material.bending = command.get<double>("bending");
+    if(!command.has("solid")) return PD::internal::body_of_surface(points, triangles, false, material);
+    PD::Tetrahedralization_options o;
+    o.cell_size = command.get<double>("cell-size");
+    o.facet_distance = command.get<double>("facet-distance");
+    o.feature_angle = command.get<double>("feature-angle");
+    Step meshing("tetrahedra (Mesh_3)");
+    Body body = PD::internal::body_of_surface(points, triangles, true, material, o);
+    meshing.done();
+    say("tetrahedra: %zu vertices, %zu tetrahedra (Mesh_3, %.3f s); the surface's vertices embedded, at most %.3g of "
+        "the diagonal outside them\n",
+        body.tetrahedra.points.size(), body.tetrahedra.tetrahedra.size(), meshing.seconds(),
+        body.largest_outside_distance);
+    if(command.has("tetrahedra"))
     {
-      PD::Tetrahedralization_options o;
-      o.cell_size = command.get<double>("cell-size");
-      o.facet_distance = command.get<double>("facet-distance");
-      o.feature_angle = command.get<double>("feature-angle");
-      Step meshing("tetrahedra (Mesh_3)");
-      PD::Tetrahedralized_surface t = PD::tetrahedralize(points, triangles, o);
-      meshing.done();
-      say("tetrahedra: %zu vertices, %zu tetrahedra (Mesh_3, %.3f s); the surface's vertices embedded, at most %.3g of "
-          "the diagonal outside them\n",
-          t.mesh.points.size(), t.mesh.tetrahedra.size(), meshing.seconds(), t.largest_outside_distance);
-      if(command.has("tetrahedra"))
-      {
-        PD::write_medit(command.get<std::string>("tetrahedra"), t.mesh);
-        say("wrote %s\n", command.get<std::string>("tetrahedra").c_str());
-      }
-      Body body(PD::make_solid_model(t.mesh, PD::parameters::strain_stiffness(stiffness).density(density)), triangles,
-                true, int(t.mesh.tetrahedra.size()));
-      body.embedded = true;
-      body.embedding = std::move(t.surface);
-      return body;
+      PD::write_medit(command.get<std::string>("tetrahedra"), body.tetrahedra);
+      say("wrote %s\n", command.get<std::string>("tetrahedra").c_str());
     }
-    return Body(PD::make_shell_model(points, triangles,
-                                     PD::parameters::strain_stiffness(stiffness).density(density).bending_stiffness(
-                                         command.get<double>("bending"))),
-                triangles, false, int(triangles.size()));
+    return body;
   }
   catch(const std::invalid_argument& e) // Invalid_input or Invalid_mesh
   {
@@ -122,8 +104,7 @@ Scene make_scene(const std::string& name, const PD::Positions& rest)
   s.name = name;
   if(name == "drop")
   {
-    // A quarter of the height below the body (of its largest side if it is flat).
-    s.floor_height = lo[2] - 0.25 * std::max(extent[2], 0.1 * extent.maxCoeff());
+    s.floor_height = PD::internal::drop_floor_height(rest);
     return s;
   }
   // Cantilever and grab: the vertices within 5% of the length of one end are pinned.
@@ -288,14 +269,9 @@ int simulate_command(const Arguments& args)
     if(command.has("reduced"))
     {
       const int n = body.model.number_of_vertices();
-      PD::Reduction_options r;
-      // Unless asked for, at most one sample per 16 vertices: a sample's support must hold
-      // enough vertices to span its affine maps.
-      r.samples = command.has("samples") ? std::min(command.get<int>("samples"), n)
-                                         : std::min(command.get<int>("samples"), std::max(1, n / 16));
-      r.constraint_samples = std::min(r.constraint_samples, n);
-      r.projection_columns = std::min(command.get<int>("projection-columns"), 4 * r.constraint_samples);
-      r.sampled_elements = std::max(command.get<int>("sampled-elements"), r.projection_columns + 20);
+      PD::Reduction_options r = PD::internal::capped_reduction_options(
+          n, command.get<int>("samples"), command.has("samples"), command.get<int>("projection-columns"),
+          command.get<int>("sampled-elements"));
       Progress_bar bar;
       r.progress = [&](const PD::Reduced_precomputation_progress& p) {
         bar.update(p.stage, p.fraction);

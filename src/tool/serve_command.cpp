@@ -2,8 +2,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // `tvf serve`: the viewer (src/viewer) with the sessions of Chapters 1 and 2, designing
-// tangent vector fields and n-direction fields on the mesh, and the stroke fitting of
-// Chapter 6 (the `curve` kind, which needs no mesh) (doc/viewer/protocol.md).  Here:
+// tangent vector fields and n-direction fields on the mesh, the stroke fitting of Chapter 6
+// (the `curve` kind, which needs no mesh) and the mesh simulated in real time by Chapter 3
+// (the `simulation` kind) (doc/viewer/protocol.md).  Here:
 // the options, the mesh and the background job that provides the basis.
 
 #include "tool.h"
@@ -11,6 +12,7 @@
 #include "tangent_vector_fields/field_kinds.h"
 #include "tangent_vector_fields/field_session.h"
 #include "spline_approximation/curve_session.h"
+#include "projective_dynamics/simulation_session.h"
 
 #include <CGAL/Tangent_vector_fields/Eigenfield_basis.h>
 #include <CGAL/Tangent_vector_fields/Hodge_solver.h>
@@ -32,6 +34,23 @@ namespace tvf_tool {
 using tvf_viewer::Field_limits;
 using tvf_viewer::Field_model;
 
+namespace {
+
+// The mesh as the simulation session simulates it (its vertices in the page's order).
+std::shared_ptr<const tvf_viewer::Simulation_surface> simulation_surface(const Tool_mesh& mesh, const std::string& name)
+{
+  auto surface = std::make_shared<tvf_viewer::Simulation_surface>();
+  const TVF::Intrinsic_mesh& m = mesh.intrinsic();
+  surface->name = name;
+  for(int v = 0; v < m.number_of_vertices(); ++v) surface->points.push_back(m.position(v));
+  for(int f = 0; f < m.number_of_faces(); ++f) surface->triangles.push_back(m.face_vertices(f));
+  surface->closed = true;
+  for(int e = 0; e < m.number_of_edges(); ++e) surface->closed = surface->closed && !m.is_boundary_edge(e);
+  return surface;
+}
+
+} // namespace
+
 int serve_command(const Arguments& args)
 {
   Command_line command(
@@ -44,7 +63,9 @@ int serve_command(const Arguments& args)
       "designs n-direction fields (line fields, cross fields, ...): the basis of n-fields (N elements) is\n"
       "made when a page first asks for its n, loaded from or saved to FILE.n<n>.tvfn beside --basis.\n"
       "The page's Session menu (or &kind=curve in the address) opens stroke fitting instead: draw a curve\n"
-      "and watch its spline's knots follow the tolerance (Chapter 6; the mesh is not used there).\n"
+      "and watch its spline's knots follow the tolerance (Chapter 6; the mesh is not used there), and\n"
+      "&kind=simulation the mesh as cloth (or, closed, a solid) falling onto a floor in real time: grab,\n"
+      "drag and poke it, change its stiffness while it moves (Projective Dynamics, Chapter 3).\n"
       "Only this machine's names (and --allow-host ones) are answered, only the page's own origin (and\n"
       "--allow-origin ones) may use it, and the WebSocket needs the token of the printed address:\n"
       "other web pages open in the browser cannot reach the session.  Stop with Ctrl-C.");
@@ -133,6 +154,7 @@ int serve_command(const Arguments& args)
   tvf_viewer::Session_kinds kinds;
   tvf_viewer::add_field_kinds(kinds, model);
   kinds.add(std::make_shared<tvf_viewer::Curve_kind>()); // strokes (Chapter 6): no mesh needed, never the default
+  kinds.add(std::make_shared<tvf_viewer::Simulation_kind>(simulation_surface(mesh, name)));
   tvf_viewer::Server server(kinds, options);
   try
   {

@@ -9,10 +9,12 @@ import { Connection } from './connection.js';
 import { registerKind, kindNames } from './kinds.js';
 import { fieldKind } from './tangent_vector_fields/index.js';
 import { curveKind } from './spline_approximation/index.js';
+import { simulationKind } from './projective_dynamics/index.js';
 
 registerKind('vector_field', fieldKind);
 registerKind('n_field', fieldKind);
 registerKind('curve', curveKind);
+registerKind('simulation', simulationKind);
 
 const viewer = new Viewer(document.getElementById('canvas'));
 const latency = new LatencyPanel(document.getElementById('latency'));
@@ -22,7 +24,8 @@ const parameters = new URLSearchParams(location.search);
 const token = encodeURIComponent(parameters.get('token') ?? '');
 
 // The Session menu opens the page again with another kind (the server's first without one).
-const LABELS = { vector_field: 'vector fields', n_field: 'n-direction fields', curve: 'stroke fitting' };
+const LABELS = { vector_field: 'vector fields', n_field: 'n-direction fields', curve: 'stroke fitting',
+  simulation: 'simulation' };
 const menu = document.getElementById('kind-menu');
 for (const name of kindNames()) menu.add(new Option(LABELS[name] ?? name, name));
 menu.value = parameters.get('kind') ?? kindNames()[0];

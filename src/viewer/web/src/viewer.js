@@ -171,6 +171,45 @@ export class Viewer {
     this.fitCamera(geometry.boundingSphere);
   }
 
+  // New vertex positions (3 floats per vertex) for the mesh of setMesh, moved in place: the
+  // triangle soup and its smooth normals follow (a simulation's frames).
+  updatePositions(positions) {
+    const { triangles } = this.mesh;
+    const nv = positions.length / 3;
+    const normals = this.vertexNormals;
+    normals.fill(0);
+    const a = new THREE.Vector3(), b = new THREE.Vector3(), c = new THREE.Vector3();
+    for (let corner = 0; corner < triangles.length; corner += 3) {
+      const [i, j, k] = [triangles[corner], triangles[corner + 1], triangles[corner + 2]];
+      a.fromArray(positions, 3 * i);
+      b.fromArray(positions, 3 * j).sub(a);
+      c.fromArray(positions, 3 * k).sub(a);
+      b.cross(c);
+      for (const v of [i, j, k]) {
+        normals[3 * v] += b.x;
+        normals[3 * v + 1] += b.y;
+        normals[3 * v + 2] += b.z;
+      }
+    }
+    for (let v = 0; v < nv; ++v) a.fromArray(normals, 3 * v).normalize().toArray(normals, 3 * v);
+    const geometry = this.surface.geometry;
+    const soup = geometry.getAttribute('position');
+    const soupNormals = geometry.getAttribute('normal');
+    for (let corner = 0; corner < triangles.length; ++corner) {
+      const v = triangles[corner];
+      for (let d = 0; d < 3; ++d) {
+        soup.array[3 * corner + d] = positions[3 * v + d];
+        soupNormals.array[3 * corner + d] = normals[3 * v + d];
+      }
+    }
+    soup.needsUpdate = true;
+    soupNormals.needsUpdate = true;
+    geometry.computeBoundingSphere(); // picking tests the sphere first
+    geometry.computeBoundingBox();
+    this.mesh = { ...this.mesh, positions: Float32Array.from(positions) };
+    this.requestRender();
+  }
+
   // The whole mesh in view, seen from the front and a little from above and the right.
   fitCamera(sphere) {
     const { center, radius } = sphere;
