@@ -5,28 +5,9 @@
 //
 //   node e2e.mjs --tvf build/tvf --mesh sphere.off --node-modules build/viewer/node_modules
 //                --artifacts build/test-artifacts [--chromium /usr/bin/chromium] [--eigenfields 60]
-import { createRequire } from 'node:module';
-import { spawn } from 'node:child_process';
-import fs from 'node:fs';
-import os from 'node:os';
 import path from 'node:path';
 
-function options(argv) {
-  const o = { chromium: '/usr/bin/chromium', eigenfields: '60' };
-  for (let i = 2; i < argv.length; i += 2) {
-    if (!argv[i].startsWith('--') || i + 1 >= argv.length) throw new Error(`bad argument ${argv[i]}`);
-    o[argv[i].slice(2).replace(/-(.)/g, (_, c) => c.toUpperCase())] = argv[i + 1];
-  }
-  for (const required of ['tvf', 'mesh', 'nodeModules', 'artifacts']) {
-    if (!o[required]) throw new Error(`missing --${required.replace(/[A-Z]/g, (c) => '-' + c.toLowerCase())}`);
-  }
-  return o;
-}
-
-function check(condition, what) {
-  if (!condition) throw new Error(`check failed: ${what}`);
-  console.log(`ok: ${what}`);
-}
+import { check, openViewer, options, runTest } from './e2e_support.mjs';
 
 const norm = (v) => Math.hypot(...v);
 const sub = (a, b) => a.map((x, i) => x - b[i]);
@@ -85,25 +66,6 @@ async function fieldState(page) {
   });
 }
 
-// Starts the server; resolves with its address once it prints "listening on ...".
-function startServer(o) {
-  const server = spawn(o.tvf, ['serve', o.mesh, '--port', '0', '-n', o.eigenfields],
-    { stdio: ['ignore', 'pipe', 'pipe'] });
-  let stderr = '';
-  server.stderr.on('data', (d) => { stderr += d; process.stderr.write(`[tvf] ${d}`); });
-  const url = new Promise((resolve, reject) => {
-    let stdout = '';
-    server.stdout.on('data', (d) => {
-      stdout += d;
-      const m = stdout.match(/listening on (http:\/\/\S+)/);
-      if (m) resolve(m[1]);
-    });
-    server.on('exit', (code) => reject(new Error(`tvf serve exited (${code}) before listening: ${stderr}`)));
-    setTimeout(() => reject(new Error('tvf serve did not print its address within 60 s')), 60000);
-  });
-  return { server, url };
-}
-
 // The field at face f must equal the constraint's vector projected onto the face's plane, to
 // float32 precision (the field is sent as float32; the solve itself is exact).
 async function checkFieldMatches(page, constraint, what) {
@@ -120,42 +82,11 @@ async function checkFieldMatches(page, constraint, what) {
 }
 
 async function main() {
-  const o = options(process.argv);
+  const o = options(process.argv, { eigenfields: '60' });
   console.log(`node ${process.version}`); // the page's packages must run on Debian 12's node 18
-  // ESM imports ignore NODE_PATH: resolve playwright-core from the build's node_modules.
-  const require = createRequire(path.join(path.resolve(o.nodeModules), '..', 'package.json'));
-  const { chromium } = require('playwright-core');
-  fs.mkdirSync(o.artifacts, { recursive: true });
-
-  const { server, url } = startServer(o);
-  const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'tvf-e2e-'));
-  // The server must not outlive the test, whichever way the test ends: a failure, a signal
-  // (CTest's timeout), or the watchdog, which ends a hung test before CTest's 180 s.
-  process.on('exit', () => {
-    server.kill('SIGTERM');
-    fs.rmSync(profile, { recursive: true, force: true });
-  });
-  for (const signal of ['SIGINT', 'SIGTERM']) process.on(signal, () => process.exit(1));
-  setTimeout(() => {
-    console.error('editor e2e: FAILED: no result within 150 s');
-    process.exit(1);
-  }, 150000).unref();
-  let browser = null;
+  const { address, browser, page, problems } =
+    await openViewer(o, 'editor', { eigenfields: o.eigenfields, watchdogSeconds: 150 });
   try {
-    const address = await url;
-    console.log(`server at ${address}`);
-    browser = await chromium.launchPersistentContext(profile, {
-      executablePath: o.chromium,
-      headless: true,
-      viewport: { width: 1200, height: 800 },
-      args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-        '--disable-background-networking', '--disable-component-update', '--disable-sync'],
-    });
-    const page = browser.pages()[0] || await browser.newPage();
-    const problems = [];
-    page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
-    page.on('console', (m) => { if (m.type() === 'error') problems.push(`console error: ${m.text()}`); });
-
     // Without the token the page loads, but its WebSocket is refused, and the page says why.
     check(/\/\?token=[0-9a-f]{32}$/.test(address), 'the printed address carries a token of 128 bits');
     const bare = await browser.newPage();
@@ -335,14 +266,8 @@ async function main() {
     check(problems.length === 0, `no errors in the page${problems.length ? ': ' + problems.join('; ') : ''}`);
     check(!status.includes('error'), 'the status line shows no error');
   } finally {
-    if (browser) await browser.close().catch(() => {});
+    await browser.close().catch(() => {});
   }
 }
 
-main().then(() => {
-  console.log('editor e2e: passed');
-  process.exit(0);
-}, (e) => {
-  console.error(`editor e2e: FAILED: ${e.stack || e.message}`);
-  process.exit(1);
-});
+runTest('editor', main);

@@ -5,46 +5,9 @@
 //
 //   node e2e_curve.mjs --tvf build/tvf --mesh sphere.off --node-modules build/viewer/node_modules
 //                      --artifacts build/test-artifacts [--chromium /usr/bin/chromium]
-import { createRequire } from 'node:module';
-import { spawn } from 'node:child_process';
-import fs from 'node:fs';
-import os from 'node:os';
 import path from 'node:path';
 
-function options(argv) {
-  const o = { chromium: '/usr/bin/chromium' };
-  for (let i = 2; i < argv.length; i += 2) {
-    if (!argv[i].startsWith('--') || i + 1 >= argv.length) throw new Error(`bad argument ${argv[i]}`);
-    o[argv[i].slice(2).replace(/-(.)/g, (_, c) => c.toUpperCase())] = argv[i + 1];
-  }
-  for (const required of ['tvf', 'mesh', 'nodeModules', 'artifacts']) {
-    if (!o[required]) throw new Error(`missing --${required.replace(/[A-Z]/g, (c) => '-' + c.toLowerCase())}`);
-  }
-  return o;
-}
-
-function check(condition, what) {
-  if (!condition) throw new Error(`check failed: ${what}`);
-  console.log(`ok: ${what}`);
-}
-
-// Starts the server (a small basis: the curve session does not use it); resolves with its
-// address once it prints "listening on ...".
-function startServer(o) {
-  const server = spawn(o.tvf, ['serve', o.mesh, '--port', '0', '-n', '20'], { stdio: ['ignore', 'pipe', 'pipe'] });
-  const url = new Promise((resolve, reject) => {
-    let stdout = '';
-    server.stdout.on('data', (d) => {
-      stdout += d;
-      const m = stdout.match(/listening on (http:\/\/\S+)/);
-      if (m) resolve(m[1]);
-    });
-    server.stderr.on('data', (d) => process.stderr.write(`[tvf] ${d}`));
-    server.on('exit', (code) => reject(new Error(`tvf serve exited (${code}) before listening`)));
-    setTimeout(() => reject(new Error('tvf serve did not print its address within 60 s')), 60000);
-  });
-  return { server, url };
-}
+import { check, openViewer, options, runTest } from './e2e_support.mjs';
 
 // The zig-zag's corners, as fractions of the canvas: 4 interior corners.
 const ZIGZAG = [[0.12, 0.3], [0.28, 0.72], [0.44, 0.3], [0.6, 0.72], [0.76, 0.3], [0.9, 0.65]];
@@ -75,35 +38,9 @@ async function dragSlider(page, fraction) {
 
 async function main() {
   const o = options(process.argv);
-  const require = createRequire(path.join(path.resolve(o.nodeModules), '..', 'package.json'));
-  const { chromium } = require('playwright-core');
-  fs.mkdirSync(o.artifacts, { recursive: true });
-  const { server, url } = startServer(o);
-  const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'tvf-e2e-curve-'));
-  process.on('exit', () => {
-    server.kill('SIGTERM');
-    fs.rmSync(profile, { recursive: true, force: true });
-  });
-  for (const signal of ['SIGINT', 'SIGTERM']) process.on(signal, () => process.exit(1));
-  setTimeout(() => {
-    console.error('curve e2e: FAILED: no result within 100 s');
-    process.exit(1);
-  }, 100000).unref();
-  let browser = null;
+  // A small basis: the curve session does not use it.
+  const { address, browser, page, problems } = await openViewer(o, 'curve', { eigenfields: 20 });
   try {
-    const address = await url;
-    browser = await chromium.launchPersistentContext(profile, {
-      executablePath: o.chromium,
-      headless: true,
-      viewport: { width: 1200, height: 800 },
-      args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-        '--disable-background-networking', '--disable-component-update', '--disable-sync'],
-    });
-    const page = browser.pages()[0] || await browser.newPage();
-    const problems = [];
-    page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
-    page.on('console', (m) => { if (m.type() === 'error') problems.push(`console error: ${m.text()}`); });
-
     await page.goto(`${address}&kind=curve`);
     await page.waitForFunction(() => window.tvfCurve !== undefined);
     await page.evaluate(() => window.tvfCurve.ready);
@@ -204,14 +141,8 @@ async function main() {
     'the panel shows the kept algorithm again, the fit is unchanged');
     console.log(`screenshots: ${path.join(o.artifacts, 'curve_tight.png')}, curve_loose.png`);
   } finally {
-    if (browser) await browser.close().catch(() => {});
+    await browser.close().catch(() => {});
   }
 }
 
-main().then(() => {
-  console.log('curve e2e: passed');
-  process.exit(0);
-}, (e) => {
-  console.error(`curve e2e: FAILED: ${e.stack || e.message}`);
-  process.exit(1);
-});
+runTest('curve', main);

@@ -6,66 +6,17 @@
 //
 //   node e2e_simulation.mjs --tvf build/tvf --mesh sphere.off --node-modules build/viewer/node_modules
 //                           --artifacts build/test-artifacts [--chromium /usr/bin/chromium]
-import { createRequire } from 'node:module';
-import { spawn } from 'node:child_process';
-import fs from 'node:fs';
-import os from 'node:os';
 import path from 'node:path';
 
-const args = { chromium: '/usr/bin/chromium' };
-for (let i = 2; i + 1 < process.argv.length; i += 2) {
-  args[process.argv[i].replace(/^--/, '').replace(/-(.)/g, (_, c) => c.toUpperCase())] = process.argv[i + 1];
-}
-for (const key of ['tvf', 'mesh', 'nodeModules', 'artifacts']) if (!args[key]) throw new Error(`missing --${key}`);
+import { check, openViewer, options, runTest, sleep } from './e2e_support.mjs';
 
-function check(condition, what) {
-  if (!condition) throw new Error(`check failed: ${what}`);
-  console.log(`ok: ${what}`);
-}
-
-const sleep = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
+const args = options(process.argv);
 const lowestZ = (positions) => Math.min(...positions.filter((_, i) => i % 3 === 2));
 
-// tvf serve with a tiny basis (the simulation does not use it); its printed address.
-function serve() {
-  const child = spawn(args.tvf, ['serve', args.mesh, '--port', '0', '-n', '10'], { stdio: ['ignore', 'pipe', 'pipe'] });
-  child.stderr.on('data', (d) => process.stderr.write(`[tvf] ${d}`));
-  const address = new Promise((resolve, reject) => {
-    let out = '';
-    child.stdout.on('data', (d) => {
-      out += d;
-      const m = out.match(/listening on (http:\/\/\S+)/);
-      if (m) resolve(m[1]);
-    });
-    child.on('exit', (code) => reject(new Error(`tvf serve exited (${code})`)));
-  });
-  return { child, address };
-}
-
 async function run() {
-  const require = createRequire(path.join(path.resolve(args.nodeModules), '..', 'package.json'));
-  const { chromium } = require('playwright-core');
-  fs.mkdirSync(args.artifacts, { recursive: true });
-  const { child, address } = serve();
-  const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'tvf-e2e-simulation-'));
-  process.on('exit', () => {
-    child.kill('SIGTERM');
-    fs.rmSync(profile, { recursive: true, force: true });
-  });
-  setTimeout(() => {
-    console.error('simulation e2e: FAILED: no result within 60 s');
-    process.exit(1);
-  }, 60000).unref();
-  const browser = await chromium.launchPersistentContext(profile, {
-    executablePath: args.chromium, headless: true, viewport: { width: 1200, height: 800 },
-    args: ['--headless', '--no-sandbox', '--disable-gpu', '--no-first-run', '--disable-background-networking'],
-  });
+  const { address, browser, page, problems } = await openViewer(args, 'simulation', { watchdogSeconds: 60 });
   try {
-    const page = browser.pages()[0] || await browser.newPage();
-    const problems = [];
-    page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
-    page.on('console', (m) => { if (m.type() === 'error') problems.push(`console error: ${m.text()}`); });
-    await page.goto(`${await address}&kind=simulation`);
+    await page.goto(`${address}&kind=simulation`);
     await page.waitForFunction(() => window.tvfSimulation !== undefined);
     await page.evaluate(() => window.tvfSimulation.ready);
     const sim = (expression, arg) => page.evaluate(expression, arg);
@@ -160,10 +111,4 @@ async function run() {
   }
 }
 
-run().then(() => {
-  console.log('simulation e2e: passed');
-  process.exit(0);
-}, (e) => {
-  console.error(`simulation e2e: FAILED: ${e.stack || e.message}`);
-  process.exit(1);
-});
+runTest('simulation', run);

@@ -23,18 +23,6 @@ static const double stiffness_span = 1e4;
 static const double blow_up_distance = 100;
 static const double longest_time_step = 0.1;
 
-/// A message being answered: its JSON, its request id (echoed), the way back.
-struct Simulation_session::Request
-{
-  Json tree;
-  std::string type;
-  bool has_id = false;
-  long long id = 0;
-  const Send* send = nullptr;
-
-  std::string echo() const { return has_id ? ",\"request\":" + std::to_string(id) : std::string(); }
-  void text(const std::string& members) const { (*send)(Outgoing{false, "{" + members + echo() + "}"}); }
-};
 
 namespace {
 
@@ -78,18 +66,12 @@ Simulation_session::Simulation_session(std::shared_ptr<const Simulation_surface>
 void Simulation_session::handle_text(const std::string& text, const Send& send)
 {
   Request r;
+  r.received = Clock::now();
   r.send = &send;
   try
   {
     if(text.size() > limits_.max_message_bytes) return send(oversized_refusal(text.size(), limits_.max_message_bytes));
-    r.tree = TVF::internal::parse_json(text, "not JSON", limits_.max_json_depth);
-    if(!r.tree.is_object()) throw Message_error("a message must be a JSON object");
-    if(r.tree.contains("request"))
-    {
-      r.id = integer_member(r.tree, "request", 0, (1LL << 53));
-      r.has_id = true;
-    }
-    r.type = text_member(r.tree, "type");
+    read_request(r, text, limits_.max_json_depth);
     // The members each message may have: a misspelt one is refused, by name.
     static const std::map<std::string, std::vector<const char*>> members = {
         {"hello", {"kind", "mode", "simulator", "playing"}},

@@ -31,6 +31,8 @@ struct Simulation_limits
 };
 
 /// One page's simulation.
+struct Request; // messages.h
+
 class Simulation_session : public Session
 {
 public:
@@ -45,7 +47,6 @@ public:
   void poll(const Send& send, std::chrono::milliseconds budget) override;
 
 private:
-  struct Request;
   void hello(Request& r);
   void grab(Request& r);
   void poke(Request& r);
