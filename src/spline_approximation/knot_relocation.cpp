@@ -6,9 +6,9 @@
 //
 // Removal alone cannot move a knot: a knot kept because its neighbours sit a little off the
 // data's corners stays kept.  Here every knot slides, one at a time, to the candidate between
-// its neighbours where the squared error is least with the two neighbouring vertices held
-// (its own vertex optimal in closed form); a least-squares refit of all vertices follows each
-// sweep.  Both steps can only lower the squared error.  A knot is then removed, the one whose
+// its neighbours where the squared error is least, its own and its two neighbours' vertices
+// re-optimised and the next vertices out held (a 3 x 3 system); a least-squares refit of all
+// vertices follows each sweep.  Both steps can only lower the squared error.  A knot is then removed, the one whose
 // removal costs least with its neighbours re-optimised, judged on a local model first, then
 // refitted, and kept if the goal allows it (the bound still met, or the objective lower); the
 // next-cheapest are tried before giving up.
@@ -24,10 +24,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <utility>
 #include <limits>
 #include <numeric>
+#include <utility>
 
 namespace CGAL {
 namespace Spline_approximation {
@@ -95,7 +94,6 @@ Span_quadratic span_quadratic(const Moments& m, double h, bool about_start)
 // of a held one.  Returns +infinity where a free vertex has no sample in its spans.
 struct Window
 {
-  static constexpr int max_free = 3;
   std::vector<Span_quadratic> spans; // span v joins vertex v and v + 1
   std::vector<int> free_at;
   std::vector<Eigen::RowVectorXd> held;
@@ -184,8 +182,15 @@ public:
     X = std::move(turned);
   }
 
-  double t(Index J) const { return p_.t[Eigen::Index(J - floor_div(J, n_) * n_)] + double(floor_div(J, n_)); }
-  const double* sample(Index J) const { return &P_(Eigen::Index(J - floor_div(J, n_) * n_), 0); }
+  // Sample J's parameter and coordinates (the divisions only for J off the first period).
+  double t(Index J) const
+  {
+    return J >= 0 && J < n_ ? p_.t[Eigen::Index(J)] : p_.t[Eigen::Index(J - floor_div(J, n_) * n_)] + double(floor_div(J, n_));
+  }
+  const double* sample(Index J) const
+  {
+    return &P_(Eigen::Index(J >= 0 && J < n_ ? J : J - floor_div(J, n_) * n_), 0);
+  }
   double candidate(Index C) const
   {
     return p_.candidates[Eigen::Index(C - floor_div(C, m_) * m_)] + double(floor_div(C, m_));
@@ -201,9 +206,9 @@ public:
   // The parameter of vertex v (v = i: knot i; open: v = -1 the start, v = K the end).
   double node(const Knots& vk, Index v) const
   {
-    const Index K = Index(vk.size());
-    if(!closed_) return v < 0 ? 0.0 : v >= K ? 1.0 : candidate(vk[std::size_t(v)]);
-    return candidate(vk[std::size_t(v - floor_div(v, K) * K)] + floor_div(v, K) * m_);
+    if(!closed_ && v < 0) return 0.0;
+    if(!closed_ && v >= Index(vk.size())) return 1.0;
+    return candidate(knot_candidate(vk, v));
   }
   // The row of vertex v in the control points (the vertex of knot i is row i + 1, mod K closed).
   Eigen::Index row(const Knots& vk, Index v) const
@@ -261,16 +266,15 @@ public:
     if(!closed_) first = std::max<Index>(first, 0), last = std::min(last, K);
     Eigen::MatrixXd solution, best_solution;
     for(Index v = first; v < last; ++v) {
-      const Index k = closed_ ? v - floor_div(v, K) * K : v; // the knot's entry
-      const Index shift = closed_ ? floor_div(v, K) * m_ : 0; // knot v is candidate vk[k] + shift
+      const Index k = closed_ ? v - floor_div(v, K) * K : v; // the knot's entry in vk
       const double a = node(vk, v - 1), b = node(vk, v + 1);
       const Index ja = first_at(a), jb = first_at(b);
       Window w = outer_spans(vk, X, v);
       const std::size_t s2 = w.inner;
       const Moments whole = moments(ja, jb, b, false);
-      const Index current = vk[std::size_t(k)] + shift;
-      const Index c_first = !closed_ && v == 0 ? 0 : prior_candidate(vk, v - 1) + 1;
-      const Index c_end = !closed_ && v + 1 == K ? m_ : prior_candidate(vk, v + 1);
+      const Index current = knot_candidate(vk, v);
+      const Index c_first = !closed_ && v == 0 ? 0 : knot_candidate(vk, v - 1) + 1;
+      const Index c_end = !closed_ && v + 1 == K ? m_ : knot_candidate(vk, v + 1);
       double best = std::numeric_limits<double>::infinity(), here = best;
       Index best_c = current;
       // Evaluates the candidates lo, lo + stride, ... below hi, and the current one, from the
@@ -321,7 +325,7 @@ public:
       }
       // Move only for a gain beyond rounding (the window's sums carry relative error ~1e-13).
       if(best_c != current && std::isfinite(best) && !(best >= here - 1e-12 * std::abs(here))) {
-        vk[std::size_t(k)] = best_c - shift;
+        vk[std::size_t(k)] += best_c - current;
         for(Eigen::Index f = 0; f < 3; ++f) X.row(row(vk, v - 1 + f)) = best_solution.row(f);
         moved = true;
       }
@@ -377,8 +381,8 @@ public:
   }
 
 private:
-  // The unwrapped candidate of knot (vertex) v.
-  Index prior_candidate(const Knots& vk, Index v) const
+  // The unwrapped candidate of knot v (closed: any v, a period of candidates per K knots).
+  Index knot_candidate(const Knots& vk, Index v) const
   {
     const Index K = Index(vk.size());
     return closed_ ? vk[std::size_t(v - floor_div(v, K) * K)] + floor_div(v, K) * m_ : vk[std::size_t(v)];
@@ -445,16 +449,10 @@ Spline_fit relocate_and_remove(const Problem& p, const Goal& goal, Spline_fit fi
       Knots vk = old_vk;
       vk.erase(vk.begin() + i);
       const Index K = Index(vk.size());
-      // The vertices without knot i's (row i + 1, mod K + 1 on a closed curve).
-      const Eigen::Index gone = search.row(old_vk, i);
+      // The vertices without knot i's: vertex v is vertex v (before i) or v + 1 (after) of before.
       Eigen::MatrixXd X(old_X.rows() - 1, old_X.cols());
-      for(Eigen::Index r = 0, out = 0; r < old_X.rows(); ++r)
-        if(r != gone) X.row(out++) = old_X.row(r);
-      if(p.closed && gone == 0) { // row 0 was knot K's vertex: the rest moved up by one
-        Eigen::MatrixXd turned(X.rows(), X.cols());
-        for(Eigen::Index r = 0; r < X.rows(); ++r) turned.row(r) = X.row((r + X.rows() - 1) % X.rows());
-        X = std::move(turned);
-      }
+      for(Index v = p.closed ? 0 : -1; v < (p.closed ? K : K + 1); ++v)
+        X.row(search.row(vk, v)) = old_X.row(search.row(old_vk, v < i ? v : v + 1));
       const Index first = i - reach, last = i + reach;
       const bool whole = p.closed && last - first + 5 >= K; // the window wraps onto itself
       for(int pass = 0; pass < 4; ++pass)
