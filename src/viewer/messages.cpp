@@ -141,8 +141,19 @@ std::string text_member(const Json& tree, const char* key)
   return node.get<std::string>();
 }
 
-void read_request(Request& r, const std::string& text, int max_depth)
+namespace {
+
+std::string oversized_reason(std::size_t bytes, std::size_t limit)
 {
+  return "message of " + std::to_string(bytes) + " bytes or more exceeds the limit of " + std::to_string(limit) +
+         " bytes";
+}
+
+} // namespace
+
+void read_request(Request& r, const std::string& text, std::size_t max_bytes, int max_depth)
+{
+  if(text.size() > max_bytes) throw Message_error(oversized_reason(text.size(), max_bytes));
   r.tree = TVF::internal::parse_json(text, "not JSON", max_depth);
   if(!r.tree.is_object()) throw Message_error("a message must be a JSON object");
   if(r.tree.contains("request"))
@@ -162,10 +173,7 @@ Outgoing binary_refusal(std::size_t bytes)
 
 Outgoing oversized_refusal(std::size_t bytes, std::size_t limit)
 {
-  return {false, "{\"type\":\"error\",\"message\":" +
-                     quote("message of " + std::to_string(bytes) + " bytes or more exceeds the limit of " +
-                           std::to_string(limit) + " bytes") +
-                     "}"};
+  return {false, "{\"type\":\"error\",\"message\":" + quote(oversized_reason(bytes, limit)) + "}"};
 }
 
 } // namespace tvf_viewer

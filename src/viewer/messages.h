@@ -70,6 +70,10 @@ std::string text_member(const Json& tree, const char* key);
 /// answer), when it arrived, and the way back.  Session kinds share it.
 struct Request
 {
+  Request() = default;
+  /// A message arriving now, answered through `send`.
+  explicit Request(const Send& to) : received(Clock::now()), send(&to) {}
+
   Json tree;
   std::string type;
   bool has_id = false;
@@ -82,9 +86,10 @@ struct Request
   void text(const std::string& members) const { (*send)(Outgoing{false, "{" + members + echo() + "}"}); }
 };
 
-/// Reads a message's JSON (strict: syntax, duplicate keys and nesting deeper than `max_depth`
-/// refused while parsing), its request id and type into `r`; `Message_error` names what is wrong.
-void read_request(Request& r, const std::string& text, int max_depth);
+/// Reads a message's JSON (strict: more than `max_bytes`, syntax, duplicate keys and nesting
+/// deeper than `max_depth` refused), its request id and type into `r`; `Message_error` names
+/// what is wrong.
+void read_request(Request& r, const std::string& text, std::size_t max_bytes, int max_depth);
 
 /// The `error` messages of the transport: a binary message (the page sends JSON text) and a
 /// message over `limit` bytes.

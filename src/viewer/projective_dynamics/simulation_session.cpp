@@ -65,13 +65,10 @@ Simulation_session::Simulation_session(std::shared_ptr<const Simulation_surface>
 
 void Simulation_session::handle_text(const std::string& text, const Send& send)
 {
-  Request r;
-  r.received = Clock::now();
-  r.send = &send;
+  Request r(send);
   try
   {
-    if(text.size() > limits_.max_message_bytes) return send(oversized_refusal(text.size(), limits_.max_message_bytes));
-    read_request(r, text, limits_.max_json_depth);
+    read_request(r, text, limits_.max_message_bytes, limits_.max_json_depth);
     // The members each message may have: a misspelt one is refused, by name.
     static const std::map<std::string, std::vector<const char*>> members = {
         {"hello", {"kind", "mode", "simulator", "playing"}},

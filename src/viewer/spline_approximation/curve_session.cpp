@@ -98,13 +98,10 @@ Curve_session::Curve_session(Curve_limits limits) : limits_(limits) {}
 
 void Curve_session::handle_text(const std::string& text, const Send& send)
 {
-  Request r;
-  r.received = Clock::now();
-  r.send = &send;
+  Request r(send);
   try
   {
-    if(text.size() > limits_.max_message_bytes) return send(oversized_refusal(text.size(), limits_.max_message_bytes));
-    read_request(r, text, limits_.max_json_depth);
+    read_request(r, text, limits_.max_message_bytes, limits_.max_json_depth);
     // The members each message may have: a misspelt one is refused, by name.
     static const std::vector<const char*> settings = {"degree", "error", "tolerance", "algorithm", "closed"};
     static const std::map<std::string, std::vector<const char*>> members = {

@@ -16,6 +16,7 @@ namespace tvf_viewer {
 /// A message being answered (the viewer's shared `Request`), with what the field session adds.
 struct Field_session::Request : tvf_viewer::Request
 {
+  using tvf_viewer::Request::Request;
   // Time the reduced solver spent on the edit itself (a new row's pull-back in the basis),
   // added to the solve time of the field message.
   double reduced_ms = 0;

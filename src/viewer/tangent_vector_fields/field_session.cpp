@@ -52,14 +52,10 @@ std::string Field_session::farewell()
 
 void Field_session::handle_text(const std::string& text, const Send& send)
 {
-  Request request;
-  request.received = Clock::now();
-  request.send = &send;
+  Request request(send);
   try
   {
-    if(text.size() > model_->limits().max_message_bytes)
-      return send(oversized_refusal(text.size(), model_->limits().max_message_bytes));
-    read_request(request, text, model_->limits().max_json_depth);
+    read_request(request, text, model_->limits().max_message_bytes, model_->limits().max_json_depth);
     dispatch(request);
   }
   catch(const Message_error& e)
