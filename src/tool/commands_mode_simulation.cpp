@@ -228,12 +228,8 @@ int vibrate_command(const Arguments& args)
       for(int c = 0; c < 3; ++c) q(v, c) = arrays.x[3 * v + c] + u(3 * v + c, f);
     writer.write(int(f), q);
   }
-  if(writer.count() > 0)
-  {
-    const std::string series = writer.finish();
-    say("wrote %zu frames to %s%s%s\n", writer.count(), command.get<std::string>("output").c_str(),
-        series.empty() ? "" : ", series ", series.c_str());
-  }
+  const std::string written = writer.finish();
+  if(!written.empty()) say("%s\n", written.c_str());
   return 0;
 }
 

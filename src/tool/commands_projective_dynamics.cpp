@@ -311,12 +311,8 @@ int simulate_command(const Arguments& args)
   {
     throw Tool_error("'" + path + "': " + one_line(e.what()));
   }
-  if(writer.count() > 0)
-  {
-    const std::string series = writer.finish();
-    say("wrote %zu frames to %s%s%s\n", writer.count(), command.get<std::string>("output").c_str(),
-        series.empty() ? "" : ", series ", series.c_str());
-  }
+  const std::string written = writer.finish();
+  if(!written.empty()) say("%s\n", written.c_str());
   return 0;
 }
 

@@ -65,7 +65,9 @@ void Frame_writer::write(int frame, const Positions& q)
 
 std::string Frame_writer::finish() const
 {
-  if(folder_.empty() || format_ != "vtp") return std::string();
+  if(names_.empty()) return std::string();
+  const std::string written = "wrote " + std::to_string(names_.size()) + " frames to " + folder_;
+  if(format_ != "vtp") return written;
   const std::string path = folder_ + "/frames.pvd";
   std::ofstream out(path);
   MR::internal::prepare_exact_output(out);
@@ -75,7 +77,7 @@ std::string Frame_writer::finish() const
   out << "  </Collection>\n</VTKFile>\n";
   out.close();
   if(!out) throw Tool_error("writing '" + path + "' failed");
-  return path;
+  return written + ", series " + path;
 }
 
 } // namespace tvf_tool

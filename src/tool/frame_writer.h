@@ -25,7 +25,8 @@ public:
   static bool known_format(const std::string& format);
   /// Writes frame_NNNN.<format>.  \throws Tool_error naming the file.
   void write(int frame, const Positions& q);
-  /// Writes the ParaView series frames.pvd (VTP frames only) and returns its path ("" if none).
+  /// Writes the ParaView series frames.pvd (VTP frames only); returns what was written, as
+  /// "wrote N frames to FOLDER[, series PATH]" ("" if no frame was).
   std::string finish() const;
   std::size_t count() const { return names_.size(); }
 
