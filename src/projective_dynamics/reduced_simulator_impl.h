@@ -10,6 +10,7 @@
 #include <CGAL/Projective_dynamics/Position_subspace.h>
 #include <CGAL/Projective_dynamics/Projection_subspace.h>
 #include <CGAL/Projective_dynamics/Reduced_simulator.h>
+#include <CGAL/Projective_dynamics/internal/floor_push.h>
 
 #include "element_graph.h"
 #include "hyper_reduction.h"
@@ -29,6 +30,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <string>
 #include <thread>
 
@@ -84,11 +86,10 @@ struct Reduced_simulator::Impl : internal::Scene_handles
   std::vector<int> samples;
   Eigen::MatrixXd Mr;
   Eigen::LLT<Eigen::MatrixXd> Mr_llt;
-  // (U^T M U)^-1, for the floor's pushes: times the sparse rows of U it costs O(k nnz) per push
-  // instead of the O(k^2 c) of solving with c dense rows (armadillo drop, 22.8k tets, k = 600:
-  // contact 96-104 -> 44-47 ms per step).  Made at the first push (O(k^3)): a scene without a
-  // floor never pays for it.
+  // (U^T M U)^-1, for the floor's pushes (its columns near the contact make the push's problem).
+  // Made at the first push (O(k^3)): a scene without a floor never pays for it.
   mutable Eigen::MatrixXd Mr_inverse;
+  mutable internal::Floor_push_report last_push;
   Eigen::VectorXd gvec; // U^T m
   std::vector<internal::Reduced_group> groups;
   // Hyper-reduction: the sampled elements' rows on the used vertices.
@@ -322,52 +323,70 @@ struct Reduced_simulator::Impl : internal::Scene_handles
     rhs.noalias() += Ut * force;
   }
 
-  // Pushes the penetrating collision vertices onto each floor by the smallest change of x in
-  // the norm of U^T M U along the normal, holding the pinned and grabbed vertices' heights; up to
-  // ten rounds, as fixing some may push others below.
+  // Lifts the collision vertices onto each floor by the smallest change of x in the norm of
+  // U^T M U along the normal (smallest_floor_push), holding the pinned and grabbed vertices'
+  // heights.  Vertices that the push itself moves below join the problem, which is solved
+  // again; with several floors, up to ten rounds, as one floor's push may move vertices below
+  // another.  Every collision vertex ends at least `floor_tolerance` above its floor.
   void resolve_floors(Eigen::MatrixXd& x) const
   {
-    for(int round = 0; round < 10; ++round)
+    if(floors.empty() || collision.empty()) return;
+    if(Mr_inverse.rows() != k()) Mr_inverse = Mr_llt.solve(Eigen::MatrixXd::Identity(k(), k()));
+    std::vector<int> held = pinned;
+    held.insert(held.end(), grabbed.begin(), grabbed.end());
+    std::sort(held.begin(), held.end());
+    held.erase(std::unique(held.begin(), held.end()), held.end());
+    const double tolerance = floor_tolerance();
+    for(int round = 0; round < (floors.size() > 1 ? 10 : 1); ++round)
     {
       bool moved = false;
       for(const Floor& f : floors)
       {
-        std::vector<int> c;
-        std::vector<double> depth;
-        const Rows pos = [&] {
-          Rows out(Eigen::Index(collision.size()), 3);
-          for(std::size_t q = 0; q < collision.size(); ++q) out.row(Eigen::Index(q)) = U.row(collision[q]) * x;
-          return out;
-        }();
-        for(std::size_t q = 0; q < collision.size(); ++q)
-        {
-          const double d = (pos.row(Eigen::Index(q)).transpose() - f.point).dot(f.normal);
-          if(d < 0) c.push_back(collision[q]), depth.push_back(-d);
-        }
-        if(c.empty()) continue;
+        const Eigen::VectorXd normal_coordinates = x * f.normal;
+        const double offset = f.point.dot(f.normal);
+        Eigen::VectorXd height(Eigen::Index(collision.size()));
+        for(std::size_t q = 0; q < collision.size(); ++q) height[Eigen::Index(q)] = U.row(collision[q]).dot(normal_coordinates) - offset;
+        std::vector<int> rows, in_problem(collision.size(), 0);
+        auto add_below = [&](const Eigen::VectorXd& h) {
+          bool added = false;
+          for(std::size_t q = 0; q < collision.size(); ++q)
+            if(h[Eigen::Index(q)] < 0 && !in_problem[q])
+            {
+              // Only the vertices outside the pushed set need a test: the others already hold.
+              in_problem[q] = 1, rows.push_back(int(q)), added = true;
+            }
+          return added;
+        };
+        if(!add_below(height)) continue;
         moved = true;
-        // Pinned and grabbed vertices keep their height over the floor (a push must not undo a grab).
-        for(const std::vector<int>* held : {&pinned, &grabbed})
-          for(int i : *held)
-            if(std::find(c.begin(), c.end(), i) == c.end()) c.push_back(i), depth.push_back(0);
-        Sparse Uc(Eigen::Index(c.size()), k());
+        // Lifted to twice the tolerance, solved to the tolerance: every vertex ends above.
+        Eigen::VectorXd delta;
+        for(int growth = 0; growth < 20; ++growth)
         {
-          std::vector<Eigen::Triplet<double>> entries;
-          for(std::size_t q = 0; q < c.size(); ++q)
-            for(Sparse::InnerIterator it(U, c[q]); it; ++it) entries.emplace_back(int(q), int(it.col()), it.value());
-          Uc.setFromTriplets(entries.begin(), entries.end());
+          std::vector<int> vertices;
+          Eigen::VectorXd need(Eigen::Index(rows.size()));
+          for(std::size_t i = 0; i < rows.size(); ++i)
+            vertices.push_back(collision[std::size_t(rows[i])]), need[Eigen::Index(i)] = 2 * tolerance - height[rows[i]];
+          internal::Floor_push_report report;
+          delta = internal::smallest_floor_push(U, Mr_inverse, vertices, need, held, tolerance, &report);
+          last_push = report;
+          Eigen::VectorXd lifted(Eigen::Index(collision.size()));
+          for(std::size_t q = 0; q < collision.size(); ++q) lifted[Eigen::Index(q)] = height[Eigen::Index(q)] + U.row(collision[q]).dot(delta);
+          if(!add_below(lifted)) break;
         }
-        if(Mr_inverse.rows() != k()) Mr_inverse = Mr_llt.solve(Eigen::MatrixXd::Identity(k(), k()));
-        const Eigen::MatrixXd Y = Mr_inverse * Eigen::SparseMatrix<double>(Uc.transpose());
-        Eigen::MatrixXd G = Uc * Y;
-        // A relative 1e-10 on the diagonal: more penetrating vertices than the subspace can
-        // move independently make G singular; then the least-squares push.
-        G.diagonal().array() += 1e-10 * G.diagonal().mean();
-        const Eigen::VectorXd lambda = G.ldlt().solve(Eigen::Map<const Eigen::VectorXd>(depth.data(), Eigen::Index(depth.size())));
-        x += (Y * lambda) * f.normal.transpose();
+        x += delta * f.normal.transpose();
       }
       if(!moved) break;
     }
+  }
+
+  // How far the floor's solve may leave a constraint: a relative 1e-10 of the body's extent
+  // (far below what a picture shows; well above the rounding of positions of that size).
+  double floor_tolerance() const
+  {
+    const Positions& rest = model.rest_positions();
+    const double extent = (rest.colwise().maxCoeff() - rest.colwise().minCoeff()).norm();
+    return 1e-10 * std::max(extent, std::numeric_limits<double>::min());
   }
 
   void step(const std::function<void(int, const Eigen::MatrixXd&)>& after_iteration)

@@ -301,9 +301,9 @@ TEST(ProjectiveDynamicsReduced, FloorHoldsAtCollisionVerticesAndGrabsPull)
       sim.step();
       lowest = std::min(lowest, sim.positions().col(2).minCoeff());
     }
-    // Every collision vertex on or above the floor after each step, up to what ten rounds of
-    // pushes leave (a push of some vertices can move others below; 1e-5 m here).
-    EXPECT_GT(lowest, -0.3 - 1e-5) << "hyper " << hyper;
+    // Every collision vertex on or above the floor after each step (the push leaves them at
+    // least a relative 1e-10 of the extent above it, far more than the rounding of U a).
+    EXPECT_GE(lowest, -0.3) << "hyper " << hyper;
     EXPECT_LT(lowest, -0.3 + 1e-3) << "hyper " << hyper << ": it never reached the floor";
     // A grabbed corner follows its target (soft: within a few millimetres of 5 cm).
     const PD::Positions start = sim.positions_of({0});

@@ -23,10 +23,13 @@
 /// cannot hold a single vertex exactly): `kappa/2 |U_i a - target_i|^2` with
 /// `kappa = pin_stiffness * (mean vertex mass) / h^2` added to `g`.  A floor holds at the collision
 /// vertices (by default the position samples and, hyper-reduced, the sampled elements'
-/// vertices; `set_collision_vertices` chooses others): after the iterations, penetrating ones
-/// are pushed out by the smallest change of `a` in the norm of `U^T M U` along the floor's
-/// normal, holding the pinned and grabbed vertices' heights (up to ten rounds).  Other vertices
-/// may dip below; no friction; no self-collision.
+/// vertices; `set_collision_vertices` chooses others, e.g. the whole drawn surface): after the
+/// iterations, `a` changes by the smallest amount in the norm of `U^T M U`, along the floor's
+/// normal, that puts every collision vertex on or above the floor (a quadratic program solved
+/// exactly, to a relative 1e-10 of the body's extent), holding the pinned and grabbed vertices'
+/// heights.  Its size is the number of basis columns near the contact, so holding thousands of
+/// surface vertices costs little more than holding the samples.  Other vertices may dip below;
+/// no friction; no self-collision.
 /// Full positions are made only on request (`positions()`, `positions_of`).
 ///
 /// The precomputation (subspaces, sampled elements, projected matrices) can take minutes on a

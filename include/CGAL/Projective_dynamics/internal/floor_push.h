@@ -1,0 +1,48 @@
+// Copyright (c) 2026 The Projective_dynamics authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The reduced simulator's floor: the smallest change of the reduced coordinates that lifts the
+// collision vertices onto a floor, as a quadratic program whose size is the number of basis
+// columns near the contact, not the number of vertices in contact.
+
+#ifndef CGAL_PROJECTIVE_DYNAMICS_INTERNAL_FLOOR_PUSH_H
+#define CGAL_PROJECTIVE_DYNAMICS_INTERNAL_FLOOR_PUSH_H
+
+#include <Eigen/Dense>
+#include <Eigen/SparseCore>
+
+#include <vector>
+
+namespace CGAL {
+namespace Projective_dynamics {
+namespace internal {
+
+/// What a floor push did (for tests and benchmarks).
+struct Floor_push_report
+{
+  int columns = 0;             ///< basis columns the contact rows touch (the problem's size)
+  int constraints = 0;         ///< collision vertices in the problem (penetrating, or pushed below by the push)
+  int factorizations = 0;      ///< dense factorizations of the columns x columns Newton matrix
+  int updates = 0;             ///< multiplier updates of the augmented Lagrangian
+  double largest_violation = 0; ///< the most any constraint is violated after the push
+};
+
+/// The push `delta` (k values, one per basis column, along the floor's normal) that minimises
+/// `delta^T Mr delta` (Mr = U^T M U, the kinetic metric) subject to
+/// `U_i delta >= need_i` for the vertices `rows` (the lift each needs) and `U_j delta = 0` for
+/// the vertices `held` (pinned or grabbed: their height is kept), to `tolerance` (in lengths).
+///
+/// Only the columns C that those rows touch enter the constraints, so the optimum is
+/// `delta = Minv(:, C) P y` with `P = Minv(C, C)^-1` and `y = delta_C` the minimiser of
+/// `y^T P y` under the constraints restricted to C: a problem of |C| unknowns, solved by an
+/// augmented Lagrangian with semismooth Newton steps (each a |C| x |C| Cholesky factorization;
+/// the active set of a resting body repeats, so a few per push).
+Eigen::VectorXd smallest_floor_push(const Eigen::SparseMatrix<double, Eigen::RowMajor>& U, const Eigen::MatrixXd& Mr_inverse,
+                                    const std::vector<int>& rows, const Eigen::VectorXd& need, const std::vector<int>& held,
+                                    double tolerance, Floor_push_report* report = nullptr);
+
+} // namespace internal
+} // namespace Projective_dynamics
+} // namespace CGAL
+
+#endif
