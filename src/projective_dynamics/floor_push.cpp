@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 namespace CGAL {
@@ -38,44 +39,11 @@ struct Local_row
   }
 };
 
-} // namespace
-
-Eigen::VectorXd smallest_floor_push(const Sparse& U, const Eigen::MatrixXd& Mr_inverse, const std::vector<int>& rows,
-                                    const Eigen::VectorXd& need, const std::vector<int>& held, double tolerance,
-                                    Floor_push_report* report)
+// The multiplier loop of both pushes: minimises y^T P y subject to A_i y >= need_i and E_j y = 0.
+Eigen::VectorXd solve_push(const Eigen::MatrixXd& P, const std::vector<Local_row>& A, const std::vector<Local_row>& E,
+                           const Eigen::VectorXd& need, double tolerance, Floor_push_report& r, Floor_push_warm_start* warm)
 {
-  const int k = int(U.cols());
-  // The columns the rows touch, numbered locally.
-  std::vector<int> local(std::size_t(k), -1), columns;
-  auto local_row = [&](int v) {
-    Local_row row;
-    for(Sparse::InnerIterator it(U, v); it; ++it)
-    {
-      if(it.value() == 0) continue;
-      int& c = local[std::size_t(it.col())];
-      if(c < 0) c = int(columns.size()), columns.push_back(int(it.col()));
-      row.entries.emplace_back(c, it.value());
-    }
-    return row;
-  };
-  std::vector<Local_row> A, E;
-  for(int v : rows) A.push_back(local_row(v));
-  for(int v : held) E.push_back(local_row(v));
-  const int m = int(columns.size());
-  Floor_push_report r;
-  r.columns = m, r.constraints = int(rows.size());
-  if(m == 0)
-  {
-    if(report) *report = r;
-    return Eigen::VectorXd::Zero(k);
-  }
-
-  // P = Minv(C, C)^-1: the metric of delta_C once the other columns take their cheapest values.
-  Eigen::MatrixXd B(m, m);
-  for(int a = 0; a < m; ++a)
-    for(int b = 0; b < m; ++b) B(a, b) = Mr_inverse(columns[std::size_t(a)], columns[std::size_t(b)]);
-  const Eigen::MatrixXd P = B.llt().solve(Eigen::MatrixXd::Identity(m, m));
-
+  const int m = int(P.rows());
   // The penalty: a thousand times the typical diagonal of P over the typical squared row, so the
   // Newton matrix stays well conditioned (a relative 1e-3 per augmented-Lagrangian update is
   // left of a multiplier's error; the factorization is reused while the active set repeats).
@@ -85,10 +53,12 @@ Eigen::VectorXd smallest_floor_push(const Sparse& U, const Eigen::MatrixXd& Mr_i
   for(const Local_row& row : E)
     for(const auto& e : row.entries) row_norms += e.second * e.second;
   row_norms /= double(std::max<std::size_t>(1, A.size() + E.size()));
-  const double rho = 1e3 * P.diagonal().mean() / std::max(row_norms, 1e-300);
+  const double first_rho = 1e3 * P.diagonal().mean() / std::max(row_norms, 1e-300);
+  double rho = first_rho * (warm && warm->penalty_factor > 1 ? warm->penalty_factor : 1.0);
 
   Eigen::VectorXd y = Eigen::VectorXd::Zero(m), lambda = Eigen::VectorXd::Zero(Eigen::Index(A.size())),
                   mu = Eigen::VectorXd::Zero(Eigen::Index(E.size()));
+  if(warm && warm->multipliers.size() == lambda.size()) lambda = warm->multipliers.cwiseMax(0.0);
   std::vector<char> factored_active, active(A.size());
   Eigen::LLT<Eigen::MatrixXd> newton;
   auto find_active = [&] {
@@ -100,34 +70,13 @@ Eigen::VectorXd smallest_floor_push(const Sparse& U, const Eigen::MatrixXd& Mr_i
     for(const Local_row& row : E) worst = std::max(worst, std::abs(row.dot(y)));
     return worst;
   };
-  // The augmented Lagrangian phi(y) (up to a constant) and its gradient.
-  auto phi = [&](const Eigen::VectorXd& v) {
-    double value = 0.5 * v.dot(P * v);
-    for(std::size_t i = 0; i < A.size(); ++i)
-    {
-      const double g = need[Eigen::Index(i)] - A[i].dot(v) + lambda[Eigen::Index(i)] / rho;
-      if(g > 0) value += 0.5 * rho * g * g;
-    }
-    for(std::size_t j = 0; j < E.size(); ++j)
-    {
-      const double e = E[j].dot(v) + mu[Eigen::Index(j)] / rho;
-      value += 0.5 * rho * e * e;
-    }
-    return value;
-  };
-  auto gradient = [&](const Eigen::VectorXd& v) {
-    Eigen::VectorXd g = P * v;
-    for(std::size_t i = 0; i < A.size(); ++i)
-    {
-      const double gi = need[Eigen::Index(i)] - A[i].dot(v) + lambda[Eigen::Index(i)] / rho;
-      if(gi > 0) A[i].add_to(g, -rho * gi);
-    }
-    for(std::size_t j = 0; j < E.size(); ++j) E[j].add_to(g, rho * (E[j].dot(v) + mu[Eigen::Index(j)] / rho));
-    return g;
-  };
-  // Outer: multiplier updates.  Inner: semismooth Newton on phi, a convex piecewise quadratic,
-  // with a backtracking line search (without it the active set can cycle); a full step that
-  // keeps its active set lands on phi's exact minimiser.
+  // Outer: multiplier updates.  Inner: semismooth Newton on the augmented Lagrangian phi, a
+  // convex piecewise quadratic, with a backtracking line search (without it the active set can
+  // cycle); a full step that keeps its active set lands on phi's exact minimiser.
+  const std::size_t c = A.size(), h = E.size();
+  Eigen::VectorXd ay(c), ad(c), ey(h), ed(h);
+  double best_violation = std::numeric_limits<double>::infinity(), previous_violation = best_violation;
+  int stalled = 0;
   for(int outer = 0; outer < 200; ++outer)
   {
     for(int inner = 0; inner < 50; ++inner)
@@ -136,7 +85,7 @@ Eigen::VectorXd smallest_floor_push(const Sparse& U, const Eigen::MatrixXd& Mr_i
       if(active != factored_active)
       {
         Eigen::MatrixXd H = P;
-        for(std::size_t i = 0; i < A.size(); ++i)
+        for(std::size_t i = 0; i < c; ++i)
           if(active[i]) A[i].add_outer(H, rho);
         for(const Local_row& row : E) row.add_outer(H, rho);
         newton.compute(H);
@@ -144,27 +93,126 @@ Eigen::VectorXd smallest_floor_push(const Sparse& U, const Eigen::MatrixXd& Mr_i
         ++r.factorizations;
       }
       Eigen::VectorXd rhs = Eigen::VectorXd::Zero(m);
-      for(std::size_t i = 0; i < A.size(); ++i)
+      for(std::size_t i = 0; i < c; ++i)
         if(active[i]) A[i].add_to(rhs, rho * need[Eigen::Index(i)] + lambda[Eigen::Index(i)]);
-      for(std::size_t j = 0; j < E.size(); ++j) E[j].add_to(rhs, -mu[Eigen::Index(j)]);
-      const Eigen::VectorXd step = newton.solve(rhs) - y;
-      const double value = phi(y), slope = gradient(y).dot(step);
+      for(std::size_t j = 0; j < h; ++j) E[j].add_to(rhs, -mu[Eigen::Index(j)]);
+      const Eigen::VectorXd d = newton.solve(rhs) - y;
+      // phi along y + t d, from the products at y and along d (each trial costs the rows only).
+      const Eigen::VectorXd Py = P * y, Pd = P * d;
+      for(std::size_t i = 0; i < c; ++i)
+        ay[Eigen::Index(i)] = need[Eigen::Index(i)] - A[i].dot(y) + lambda[Eigen::Index(i)] / rho, ad[Eigen::Index(i)] = A[i].dot(d);
+      for(std::size_t j = 0; j < h; ++j) ey[Eigen::Index(j)] = E[j].dot(y) + mu[Eigen::Index(j)] / rho, ed[Eigen::Index(j)] = E[j].dot(d);
+      auto phi = [&](double t) {
+        double value = t * d.dot(Py) + 0.5 * t * t * d.dot(Pd);
+        for(std::size_t i = 0; i < c; ++i)
+        {
+          const double g = ay[Eigen::Index(i)] - t * ad[Eigen::Index(i)];
+          if(g > 0) value += 0.5 * rho * g * g;
+        }
+        for(std::size_t j = 0; j < h; ++j)
+        {
+          const double e = ey[Eigen::Index(j)] + t * ed[Eigen::Index(j)];
+          value += 0.5 * rho * e * e;
+        }
+        return value;
+      };
+      double slope = d.dot(Py);
+      for(std::size_t i = 0; i < c; ++i)
+        if(ay[Eigen::Index(i)] > 0) slope -= rho * ay[Eigen::Index(i)] * ad[Eigen::Index(i)];
+      for(std::size_t j = 0; j < h; ++j) slope += rho * ey[Eigen::Index(j)] * ed[Eigen::Index(j)];
+      const double value = phi(0);
       double t = 1;
-      while(t > 1e-10 && phi(y + t * step) > value + 1e-4 * t * slope) t *= 0.5;
-      y += t * step;
+      while(t > 1e-10 && phi(t) > value + 1e-4 * t * slope) t *= 0.5;
+      y += t * d;
       find_active();
       if(t == 1 && active == factored_active) break;
     }
-    for(std::size_t i = 0; i < A.size(); ++i)
+    for(std::size_t i = 0; i < c; ++i)
       lambda[Eigen::Index(i)] = std::max(0.0, lambda[Eigen::Index(i)] + rho * (need[Eigen::Index(i)] - A[i].dot(y)));
-    for(std::size_t j = 0; j < E.size(); ++j) mu[Eigen::Index(j)] += rho * E[j].dot(y);
+    for(std::size_t j = 0; j < h; ++j) mu[Eigen::Index(j)] += rho * E[j].dot(y);
     r.largest_violation = largest_violation();
     r.updates = outer + 1;
     if(r.largest_violation <= tolerance) break;
+    // Slow progress (multipliers of nearly dependent contacts) calls for a stiffer penalty, up
+    // to 1e6 times the first; once it is there, rounding sets a floor under the violation (the
+    // Newton matrix's condition number times the unit round-off): stop once ten updates in a
+    // row did not halve the best violation.
+    if(r.largest_violation > 0.25 * previous_violation && rho < 1e6 * first_rho)
+      rho *= 10, factored_active.clear();
+    previous_violation = r.largest_violation;
+    if(r.largest_violation < 0.5 * best_violation) best_violation = r.largest_violation, stalled = 0;
+    else if(++stalled == 10) break;
   }
+  if(warm) warm->multipliers = lambda, warm->penalty_factor = rho / first_rho;
+  return y;
+}
+
+// The rows of U on the columns numbered by `local` (-1: not a column of the problem); a column
+// met first is numbered next when `grow`.
+Local_row local_row(const Sparse& U, int v, std::vector<int>& local, std::vector<int>& columns, bool grow)
+{
+  Local_row row;
+  for(Sparse::InnerIterator it(U, v); it; ++it)
+  {
+    if(it.value() == 0) continue;
+    int& c = local[std::size_t(it.col())];
+    if(c < 0 && grow) c = int(columns.size()), columns.push_back(int(it.col()));
+    if(c >= 0) row.entries.emplace_back(c, it.value());
+  }
+  return row;
+}
+
+} // namespace
+
+Eigen::VectorXd smallest_floor_push(const Sparse& U, const Eigen::MatrixXd& Mr_inverse, const std::vector<int>& rows,
+                                    const Eigen::VectorXd& need, const std::vector<int>& held, double tolerance,
+                                    Floor_push_report* report, Floor_push_warm_start* warm)
+{
+  const int k = int(U.cols());
+  // The columns the rows touch, numbered locally.
+  std::vector<int> local(std::size_t(k), -1), columns;
+  std::vector<Local_row> A, E;
+  for(int v : rows) A.push_back(local_row(U, v, local, columns, true));
+  for(int v : held) E.push_back(local_row(U, v, local, columns, true));
+  const int m = int(columns.size());
+  Floor_push_report r;
+  r.columns = m, r.constraints = int(rows.size());
   Eigen::VectorXd delta = Eigen::VectorXd::Zero(k);
-  const Eigen::VectorXd z = P * y;
-  for(int a = 0; a < m; ++a) delta += Mr_inverse.col(columns[std::size_t(a)]) * z[a];
+  if(m > 0)
+  {
+    // P = Minv(C, C)^-1: the metric of delta_C once the other columns take their cheapest values.
+    Eigen::MatrixXd B(m, m);
+    for(int a = 0; a < m; ++a)
+      for(int b = 0; b < m; ++b) B(a, b) = Mr_inverse(columns[std::size_t(a)], columns[std::size_t(b)]);
+    const Eigen::MatrixXd P = B.llt().solve(Eigen::MatrixXd::Identity(m, m));
+    const Eigen::VectorXd z = P * solve_push(P, A, E, need, tolerance, r, warm);
+    for(int a = 0; a < m; ++a) delta += Mr_inverse.col(columns[std::size_t(a)]) * z[a];
+  }
+  if(report) *report = r;
+  return delta;
+}
+
+Eigen::VectorXd smallest_floor_push_in(const Sparse& U, const Eigen::MatrixXd& Mr, const std::vector<int>& push_columns,
+                                       const std::vector<int>& rows, const Eigen::VectorXd& need, const std::vector<int>& held,
+                                       double tolerance, Floor_push_report* report, Floor_push_warm_start* warm)
+{
+  const int k = int(U.cols()), m = int(push_columns.size());
+  std::vector<int> local(std::size_t(k), -1), columns = push_columns;
+  for(int a = 0; a < m; ++a) local[std::size_t(push_columns[std::size_t(a)])] = a;
+  std::vector<Local_row> A, E;
+  for(int v : rows) A.push_back(local_row(U, v, local, columns, false));
+  for(int v : held) E.push_back(local_row(U, v, local, columns, false));
+  Floor_push_report r;
+  r.columns = m, r.constraints = int(rows.size());
+  Eigen::VectorXd delta = Eigen::VectorXd::Zero(k);
+  if(m > 0)
+  {
+    Eigen::MatrixXd P(m, m);
+    for(int a = 0; a < m; ++a)
+      for(int b = 0; b < m; ++b) P(a, b) = Mr(push_columns[std::size_t(a)], push_columns[std::size_t(b)]);
+    const Eigen::VectorXd y = solve_push(P, A, E, need, tolerance, r, warm);
+    for(int a = 0; a < m; ++a) delta[push_columns[std::size_t(a)]] = y[a];
+  }
   if(report) *report = r;
   return delta;
 }

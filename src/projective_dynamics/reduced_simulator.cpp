@@ -131,6 +131,7 @@ void Reduced_simulator::set_collision_vertices(const std::vector<int>& vertices)
 {
   for(int i : vertices) impl_->check_vertex(i, "collision");
   impl_->collision = vertices;
+  impl_->floor_multipliers.clear(); // indexed by collision vertex
 }
 
 void Reduced_simulator::set_time_step(double h)

@@ -89,7 +89,9 @@ struct Reduced_simulator::Impl : internal::Scene_handles
   // (U^T M U)^-1, for the floor's pushes (its columns near the contact make the push's problem).
   // Made at the first push (O(k^3)): a scene without a floor never pays for it.
   mutable Eigen::MatrixXd Mr_inverse;
-  mutable internal::Floor_push_report last_push;
+  // The last push's multipliers (per floor, per collision vertex) and penalty, to start the next.
+  std::vector<std::vector<double>> floor_multipliers;
+  std::vector<double> floor_penalty;
   Eigen::VectorXd gvec; // U^T m
   std::vector<internal::Reduced_group> groups;
   // Hyper-reduction: the sampled elements' rows on the used vertices.
@@ -328,20 +330,33 @@ struct Reduced_simulator::Impl : internal::Scene_handles
   // heights.  Vertices that the push itself moves below join the problem, which is solved
   // again; with several floors, up to ten rounds, as one floor's push may move vertices below
   // another.  Every collision vertex ends at least `floor_tolerance` above its floor.
-  void resolve_floors(Eigen::MatrixXd& x) const
+  void resolve_floors(Eigen::MatrixXd& x)
   {
+    timings.contact_vertices = timings.contact_columns = timings.contact_factorizations = 0;
     if(floors.empty() || collision.empty()) return;
-    if(Mr_inverse.rows() != k()) Mr_inverse = Mr_llt.solve(Eigen::MatrixXd::Identity(k(), k()));
+    // A basis made from samples pushes by their translations (columns 4 j + 3); another basis by
+    // all its columns near the contact (Mr's inverse, made once).
+    std::vector<int> translations;
+    if(!samples.empty() && k() == 4 * int(samples.size()))
+      for(int j = 0; j < int(samples.size()); ++j) translations.push_back(4 * j + 3);
+    else if(Mr_inverse.rows() != k())
+      Mr_inverse = Mr_llt.solve(Eigen::MatrixXd::Identity(k(), k()));
     std::vector<int> held = pinned;
     held.insert(held.end(), grabbed.begin(), grabbed.end());
     std::sort(held.begin(), held.end());
     held.erase(std::unique(held.begin(), held.end()), held.end());
     const double tolerance = floor_tolerance();
+    floor_multipliers.resize(floors.size());
+    floor_penalty.resize(floors.size(), 1.0);
     for(int round = 0; round < (floors.size() > 1 ? 10 : 1); ++round)
     {
       bool moved = false;
-      for(const Floor& f : floors)
+      for(std::size_t fi = 0; fi < floors.size(); ++fi)
       {
+        const Floor& f = floors[fi];
+        // The last push's multipliers, by vertex.
+        std::vector<double>& multiplier = floor_multipliers[fi];
+        multiplier.resize(collision.size(), 0.0);
         const Eigen::VectorXd normal_coordinates = x * f.normal;
         const double offset = f.point.dot(f.normal);
         Eigen::VectorXd height(Eigen::Index(collision.size()));
@@ -368,8 +383,18 @@ struct Reduced_simulator::Impl : internal::Scene_handles
           for(std::size_t i = 0; i < rows.size(); ++i)
             vertices.push_back(collision[std::size_t(rows[i])]), need[Eigen::Index(i)] = 2 * tolerance - height[rows[i]];
           internal::Floor_push_report report;
-          delta = internal::smallest_floor_push(U, Mr_inverse, vertices, need, held, tolerance, &report);
-          last_push = report;
+          internal::Floor_push_warm_start warm;
+          warm.multipliers.resize(Eigen::Index(rows.size()));
+          for(std::size_t i = 0; i < rows.size(); ++i) warm.multipliers[Eigen::Index(i)] = multiplier[std::size_t(rows[i])];
+          warm.penalty_factor = floor_penalty[fi];
+          delta = translations.empty()
+                    ? internal::smallest_floor_push(U, Mr_inverse, vertices, need, held, tolerance, &report, &warm)
+                    : internal::smallest_floor_push_in(U, Mr, translations, vertices, need, held, tolerance, &report, &warm);
+          std::fill(multiplier.begin(), multiplier.end(), 0.0);
+          for(std::size_t i = 0; i < rows.size(); ++i) multiplier[std::size_t(rows[i])] = warm.multipliers[Eigen::Index(i)];
+          // (the penalty is not carried over: started stiff, the Newton steps shrink)
+          timings.contact_vertices = report.constraints, timings.contact_columns = report.columns;
+          timings.contact_factorizations += report.factorizations;
           Eigen::VectorXd lifted(Eigen::Index(collision.size()));
           for(std::size_t q = 0; q < collision.size(); ++q) lifted[Eigen::Index(q)] = height[Eigen::Index(q)] + U.row(collision[q]).dot(delta);
           if(!add_below(lifted)) break;

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The Projective_dynamics authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
-// The reduced floor's push (smallest_floor_push) against brute force: every subset of the
+// The reduced floor's pushes (smallest_floor_push, smallest_floor_push_in) against brute force: every subset of the
 // constraints taken as equalities, its KKT system solved densely in all k coordinates here, and
 // the feasible subset with non-negative multipliers is the optimum (unique: the metric is SPD).
 
@@ -55,6 +55,16 @@ Eigen::VectorXd brute_force_push(const Eigen::MatrixXd& Mr, const Eigen::MatrixX
   return best;
 }
 
+// A random SPD kinetic metric (condition numbers up to about 1e3-1e4).
+Eigen::MatrixXd random_metric(int k, std::mt19937& rng)
+{
+  std::normal_distribution<double> normal;
+  Eigen::MatrixXd R(k, k);
+  for(int i = 0; i < k; ++i)
+    for(int j = 0; j < k; ++j) R(i, j) = normal(rng);
+  return R.transpose() * R + 0.1 * Eigen::MatrixXd::Identity(k, k);
+}
+
 TEST(ProjectiveDynamicsFloorPush, MatchesTheOptimumFoundByEnumeratingActiveSets)
 {
   std::mt19937 rng(7);
@@ -70,10 +80,7 @@ TEST(ProjectiveDynamicsFloorPush, MatchesTheOptimumFoundByEnumeratingActiveSets)
       for(int q = 0; q < 3; ++q) t.emplace_back(v, column(rng), 0.2 + std::abs(normal(rng)));
     Sparse U(n, k);
     U.setFromTriplets(t.begin(), t.end());
-    Eigen::MatrixXd R(k, k);
-    for(int i = 0; i < k; ++i)
-      for(int j = 0; j < k; ++j) R(i, j) = normal(rng);
-    const Eigen::MatrixXd Mr = R.transpose() * R + 0.1 * Eigen::MatrixXd::Identity(k, k);
+    const Eigen::MatrixXd Mr = random_metric(k, rng);
     const Eigen::MatrixXd Minv = Mr.inverse();
     const Eigen::MatrixXd Ud(U);
     // Six constraints (some penetrating, some not), the odd trials with a repeated row (nearly
@@ -99,6 +106,52 @@ TEST(ProjectiveDynamicsFloorPush, MatchesTheOptimumFoundByEnumeratingActiveSets)
     ++checked;
   }
   EXPECT_EQ(checked, 40);
+}
+
+TEST(ProjectiveDynamicsFloorPush, WithinChosenColumnsMatchesEnumerationOnThoseColumns)
+{
+  // The push within columns T: the enumeration on U(:, T) with the metric Mr(T, T); the other
+  // columns must not move.
+  std::mt19937 rng(11);
+  std::normal_distribution<double> normal;
+  std::uniform_int_distribution<int> column(0, 11);
+  for(int trial = 0; trial < 30; ++trial)
+  {
+    const int k = 12, n = 20;
+    std::vector<Eigen::Triplet<double>> t;
+    for(int v = 0; v < n; ++v)
+    {
+      // Skinning-like: positive weights, a column of T of its own for each of the first six.
+      t.emplace_back(v, 2 * (v % 6), 0.5 + std::abs(normal(rng)));
+      for(int q = 0; q < 2; ++q) t.emplace_back(v, column(rng), 0.1 + 0.5 * std::abs(normal(rng)));
+    }
+    Sparse U(n, k);
+    U.setFromTriplets(t.begin(), t.end());
+    const Eigen::MatrixXd Mr = random_metric(k, rng);
+    const std::vector<int> T = {0, 2, 4, 6, 8, 10};
+    const Eigen::MatrixXd Ud(U);
+    Eigen::MatrixXd MrT(6, 6), UdT(n, 6);
+    for(int a = 0; a < 6; ++a)
+    {
+      UdT.col(a) = Ud.col(T[std::size_t(a)]);
+      for(int b = 0; b < 6; ++b) MrT(a, b) = Mr(T[std::size_t(a)], T[std::size_t(b)]);
+    }
+    // Five constraints and, every third trial, a held vertex with a T column of its own (so a
+    // push always exists).
+    const std::vector<int> rows = {0, 1, 2, 3, 4};
+    Eigen::VectorXd need(5);
+    for(int i = 0; i < 5; ++i) need[i] = normal(rng);
+    std::vector<int> held;
+    if(trial % 3 == 0) held.push_back(5);
+    const Eigen::VectorXd truth_T = brute_force_push(MrT, UdT, rows, need, held);
+    ASSERT_EQ(truth_T.size(), 6) << "trial " << trial;
+    const Eigen::VectorXd delta = PDI::smallest_floor_push_in(U, Mr, T, rows, need, held, 1e-10);
+    for(int c = 0; c < k; ++c)
+    {
+      const double expected = c % 2 == 0 ? truth_T[c / 2] : 0.0;
+      EXPECT_NEAR(delta[c], expected, 1e-7 * (1 + truth_T.norm())) << "trial " << trial << " column " << c;
+    }
+  }
 }
 
 TEST(ProjectiveDynamicsFloorPush, OneContactIsTheClosedFormPushAndTouchesOnlyItsColumns)

@@ -26,10 +26,11 @@
 /// vertices; `set_collision_vertices` chooses others, e.g. the whole drawn surface): after the
 /// iterations, `a` changes by the smallest amount in the norm of `U^T M U`, along the floor's
 /// normal, that puts every collision vertex on or above the floor (a quadratic program solved
-/// exactly, to a relative 1e-10 of the body's extent), holding the pinned and grabbed vertices'
-/// heights.  Its size is the number of basis columns near the contact, so holding thousands of
-/// surface vertices costs little more than holding the samples.  Other vertices may dip below;
-/// no friction; no self-collision.
+/// to a relative 1e-10 of the body's extent), holding the pinned and grabbed vertices' heights.
+/// With the samples' subspace the change is sought among the samples' translations (a smooth
+/// lift of the body, m unknowns whatever the number of vertices in contact); with a basis handed
+/// in, among all its columns near the contact.  Other vertices may dip below; no friction; no
+/// self-collision.
 /// Full positions are made only on request (`positions()`, `positions_of`).
 ///
 /// The precomputation (subspaces, sampled elements, projected matrices) can take minutes on a
@@ -92,8 +93,11 @@ struct Reduced_step_timings
 {
   double local = 0;  ///< positions of the used vertices, projections and (hyper-reduced) fits
   double global = 0; ///< right-hand side and the k x k solves
-  double contact = 0;
+  double contact = 0; ///< the floor's push (all floors, all rounds)
   double total = 0;
+  int contact_vertices = 0;       ///< collision vertices in the last push's problem (0: nothing touched a floor)
+  int contact_columns = 0;        ///< basis columns those vertices touch: the size of that problem
+  int contact_factorizations = 0; ///< dense factorizations of that size the push needed
   double factorization = 0;  ///< the last factorisation of K
   double precomputation = 0; ///< subspaces, projected matrices, fits (constructor), or reading them (`load`)
 };

@@ -12,7 +12,6 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
-#include <set>
 
 namespace tvf_viewer {
 
@@ -96,18 +95,8 @@ Simulation_body::Simulation_body(const Simulation_surface& surface, const Body_r
   options.iterations = 10;
   options.threads = 1; // the server serves several pages; one core each
   const int n = body_->model.number_of_vertices();
-  // The floor holds at the vertices the page sees move: every vertex of a shell, the
-  // tetrahedra's boundary vertices of a solid.
-  std::vector<int> colliding;
-  if(request.solid)
-  {
-    std::set<int> boundary;
-    for(const PD::Triangle& t : PD::boundary_triangles(body_->tetrahedra.points, body_->tetrahedra.tetrahedra))
-      boundary.insert(t.begin(), t.end());
-    colliding.assign(boundary.begin(), boundary.end());
-  }
-  else
-    for(int v = 0; v < n; ++v) colliding.push_back(v);
+  // The floor holds at the vertices the page sees move.
+  const std::vector<int> colliding = PD::internal::collision_vertices(*body_);
   if(request_.reduced)
   {
     reduction_ = PD::internal::capped_reduction_options(n, real_time_samples, false, real_time_projection_columns,

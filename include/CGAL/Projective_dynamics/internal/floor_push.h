@@ -27,6 +27,14 @@ struct Floor_push_report
   double largest_violation = 0; ///< the most any constraint is violated after the push
 };
 
+/// What the last push learnt, to start the next one near its end (a resting body's contacts and
+/// their forces change little from step to step).
+struct Floor_push_warm_start
+{
+  Eigen::VectorXd multipliers; ///< in: one per row (else ignored); out: the multipliers found
+  double penalty_factor = 1;   ///< in and out: the penalty over its default
+};
+
 /// The push `delta` (k values, one per basis column, along the floor's normal) that minimises
 /// `delta^T Mr delta` (Mr = U^T M U, the kinetic metric) subject to
 /// `U_i delta >= need_i` for the vertices `rows` (the lift each needs) and `U_j delta = 0` for
@@ -36,10 +44,22 @@ struct Floor_push_report
 /// `delta = Minv(:, C) P y` with `P = Minv(C, C)^-1` and `y = delta_C` the minimiser of
 /// `y^T P y` under the constraints restricted to C: a problem of |C| unknowns, solved by an
 /// augmented Lagrangian with semismooth Newton steps (each a |C| x |C| Cholesky factorization;
-/// the active set of a resting body repeats, so a few per push).
+/// the active set of a resting body repeats, so a few per push).  `warm`, if given, starts
+/// from the multipliers and penalty it holds and returns the new ones.
 Eigen::VectorXd smallest_floor_push(const Eigen::SparseMatrix<double, Eigen::RowMajor>& U, const Eigen::MatrixXd& Mr_inverse,
                                     const std::vector<int>& rows, const Eigen::VectorXd& need, const std::vector<int>& held,
-                                    double tolerance, Floor_push_report* report = nullptr);
+                                    double tolerance, Floor_push_report* report = nullptr,
+                                    Floor_push_warm_start* warm = nullptr);
+
+/// The same push within the span of the basis columns `push_columns` only (the others do not
+/// move): `delta_T` minimises `delta_T^T Mr(T, T) delta_T` under the same constraints, a problem
+/// of |T| unknowns whatever the contact.  For the position subspace's per-sample translations
+/// (columns `4 j + 3`, weights summing to one at every vertex) a push always exists: the floor
+/// lifts the body by a smooth blend of its samples' translations.
+Eigen::VectorXd smallest_floor_push_in(const Eigen::SparseMatrix<double, Eigen::RowMajor>& U, const Eigen::MatrixXd& Mr,
+                                       const std::vector<int>& push_columns, const std::vector<int>& rows,
+                                       const Eigen::VectorXd& need, const std::vector<int>& held, double tolerance,
+                                       Floor_push_report* report = nullptr, Floor_push_warm_start* warm = nullptr);
 
 } // namespace internal
 } // namespace Projective_dynamics

@@ -72,6 +72,24 @@ inline Simulated_body body_of_surface(const std::vector<Point>& points, const st
   return body;
 }
 
+/// The vertices a floor must hold so that nothing drawn goes below it: every vertex of a shell;
+/// of a solid, the boundary vertices of its tetrahedra (of an embedded surface, those of the
+/// tetrahedra around it: the drawn vertices are their convex combinations).
+inline std::vector<int> collision_vertices(const Simulated_body& body)
+{
+  const int n = body.model.number_of_vertices();
+  std::vector<char> on(std::size_t(n), 0);
+  if(!body.solid)
+    std::fill(on.begin(), on.end(), 1);
+  else
+    for(const Triangle& t : body.embedded ? boundary_triangles(body.tetrahedra.points, body.tetrahedra.tetrahedra) : body.surface)
+      for(int v : t) on[std::size_t(v)] = 1;
+  std::vector<int> vertices;
+  for(int v = 0; v < n; ++v)
+    if(on[std::size_t(v)]) vertices.push_back(v);
+  return vertices;
+}
+
 /// The floor of a drop: a quarter of the body's height below it (of its largest side if it is flat).
 inline double drop_floor_height(const Positions& rest)
 {
