@@ -138,7 +138,7 @@ void run_scene(Simulator& sim, const Scene& scene, const PD::Positions& rest, co
   {
     sim.add_floor(Eigen::Vector3d(0, 0, scene.floor_height), Eigen::Vector3d(0, 0, 1));
     // Reduced: the floor holds what is drawn (full PD holds every vertex).
-    if constexpr(std::is_same_v<Simulator, PD::Reduced_simulator>) sim.set_collision_vertices(PD::internal::collision_vertices(body));
+    if constexpr(std::is_same_v<Simulator, PD::Reduced_simulator>) sim.set_collision_vertices(PD::internal::collision_vertices(body, int(rest.rows())));
   }
   if(!scene.pinned.empty()) sim.set_pinned_vertices(scene.pinned);
   if(!scene.grabbed.empty()) sim.grab(scene.grabbed, scene.grab_start);

@@ -53,6 +53,15 @@ tvf_cli_test(simulate.drop success
              STDOUT "a solid, 81 vertices, 192 tetrahedra.*floor at z = -0.25"
              SETUP simulate_drop)
 pd_frame_check(drop simulate_drop ${CLI_OUT}/drop/frame_0045.obj -DMIN_Z_AT_LEAST=-0.2500001 -DMIN_Z_AT_MOST=-0.249)
+# Reduced: the floor holds every drawn vertex (the box's boundary), not only the samples and the
+# 30 sampled elements' vertices (with those alone the lowest vertex ends at -0.251).
+tvf_cli_test(simulate.drop_reduced success
+             ARGS simulate ${CLI_OUT}/box.mesh --scene drop --frames 45 --reduced --projection-columns 10
+                  --sampled-elements 30 -o ${CLI_OUT}/drop_reduced
+             OUTPUTS ${CLI_OUT}/drop_reduced/frame_0045.obj
+             STDOUT "hyper-reduced PD.*floor at z = -0.25"
+             SETUP simulate_drop_reduced)
+pd_frame_check(drop_reduced simulate_drop_reduced ${CLI_OUT}/drop_reduced/frame_0045.obj -DMIN_Z_AT_LEAST=-0.25 -DMIN_Z_AT_MOST=-0.249)
 tvf_cli_test(simulate.cantilever success
              ARGS simulate ${CLI_OUT}/box.mesh --scene cantilever --frames 30 -o ${CLI_OUT}/cantilever
              OUTPUTS ${CLI_OUT}/cantilever/frame_0030.obj

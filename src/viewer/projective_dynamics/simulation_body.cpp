@@ -96,7 +96,7 @@ Simulation_body::Simulation_body(const Simulation_surface& surface, const Body_r
   options.threads = 1; // the server serves several pages; one core each
   const int n = body_->model.number_of_vertices();
   // The floor holds at the vertices the page sees move.
-  const std::vector<int> colliding = PD::internal::collision_vertices(*body_);
+  const std::vector<int> colliding = PD::internal::collision_vertices(*body_, n);
   if(request_.reduced)
   {
     reduction_ = PD::internal::capped_reduction_options(n, real_time_samples, false, real_time_projection_columns,

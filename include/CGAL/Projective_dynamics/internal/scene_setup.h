@@ -75,9 +75,9 @@ inline Simulated_body body_of_surface(const std::vector<Point>& points, const st
 /// The vertices a floor must hold so that nothing drawn goes below it: every vertex of a shell;
 /// of a solid, the boundary vertices of its tetrahedra (of an embedded surface, those of the
 /// tetrahedra around it: the drawn vertices are their convex combinations).
-inline std::vector<int> collision_vertices(const Simulated_body& body)
+/// `n`: the model's vertex count (the model itself may have moved into a simulator).
+inline std::vector<int> collision_vertices(const Simulated_body& body, int n)
 {
-  const int n = body.model.number_of_vertices();
   std::vector<char> on(std::size_t(n), 0);
   if(!body.solid)
     std::fill(on.begin(), on.end(), 1);
