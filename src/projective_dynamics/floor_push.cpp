@@ -60,6 +60,7 @@ Eigen::VectorXd solve_push(const Eigen::MatrixXd& P, const std::vector<Local_row
                   mu = Eigen::VectorXd::Zero(Eigen::Index(E.size()));
   if(warm && warm->multipliers.size() == lambda.size()) lambda = warm->multipliers.cwiseMax(0.0);
   std::vector<char> factored_active, active(A.size());
+  int updates_since_factoring = 0;
   Eigen::LLT<Eigen::MatrixXd> newton;
   auto find_active = [&] {
     for(std::size_t i = 0; i < A.size(); ++i) active[i] = need[Eigen::Index(i)] - A[i].dot(y) + lambda[Eigen::Index(i)] / rho > 0;
@@ -84,13 +85,44 @@ Eigen::VectorXd solve_push(const Eigen::MatrixXd& P, const std::vector<Local_row
       find_active();
       if(active != factored_active)
       {
-        Eigen::MatrixXd H = P;
-        for(std::size_t i = 0; i < c; ++i)
-          if(active[i]) A[i].add_outer(H, rho);
-        for(const Local_row& row : E) row.add_outer(H, rho);
-        newton.compute(H);
+        // A few rows in or out: rank-one updates of the factor (O(m^2) each, against O(m^3) for
+        // a new factorization); many, a downdate that loses definiteness, or a new penalty:
+        // factor anew.
+        std::vector<std::size_t> changed;
+        if(factored_active.size() == c)
+          for(std::size_t i = 0; i < c && changed.size() * 8 <= std::size_t(m); ++i)
+            if(active[i] != factored_active[i]) changed.push_back(i);
+        // (at most m / 2 updates between factorizations: rounding accumulates in the factor)
+        bool updated = factored_active.size() == c && changed.size() * 8 <= std::size_t(m) &&
+                       2 * (updates_since_factoring + int(changed.size())) <= m;
+        if(updated)
+        {
+          Eigen::VectorXd v(m);
+          for(std::size_t i : changed)
+          {
+            v.setZero();
+            A[i].add_to(v, std::sqrt(rho));
+            newton.rankUpdate(v, active[i] ? 1.0 : -1.0);
+            if(newton.info() != Eigen::Success)
+            {
+              updated = false;
+              break;
+            }
+          }
+          r.rank_updates += int(changed.size());
+          updates_since_factoring += int(changed.size());
+        }
+        if(!updated)
+        {
+          Eigen::MatrixXd H = P;
+          for(std::size_t i = 0; i < c; ++i)
+            if(active[i]) A[i].add_outer(H, rho);
+          for(const Local_row& row : E) row.add_outer(H, rho);
+          newton.compute(H);
+          ++r.factorizations;
+          updates_since_factoring = 0;
+        }
         factored_active = active;
-        ++r.factorizations;
       }
       Eigen::VectorXd rhs = Eigen::VectorXd::Zero(m);
       for(std::size_t i = 0; i < c; ++i)

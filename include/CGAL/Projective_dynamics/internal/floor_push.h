@@ -23,6 +23,7 @@ struct Floor_push_report
   int columns = 0;             ///< basis columns the contact rows touch (the problem's size)
   int constraints = 0;         ///< collision vertices in the problem (penetrating, or pushed below by the push)
   int factorizations = 0;      ///< dense factorizations of the columns x columns Newton matrix
+  int rank_updates = 0;        ///< rank-one updates of that factor (a few rows in or out of the active set)
   int updates = 0;             ///< multiplier updates of the augmented Lagrangian
   double largest_violation = 0; ///< the most any constraint is violated after the push
 };
