@@ -62,12 +62,14 @@ Eigen::VectorXd solve_push(const Eigen::MatrixXd& P, const std::vector<Local_row
   std::vector<char> factored_active, active(A.size());
   int updates_since_factoring = 0;
   Eigen::LLT<Eigen::MatrixXd> newton;
+  // A y, kept up to date along the steps (the rows are passed once per Newton step).
+  Eigen::VectorXd Ay = Eigen::VectorXd::Zero(Eigen::Index(A.size()));
   auto find_active = [&] {
-    for(std::size_t i = 0; i < A.size(); ++i) active[i] = need[Eigen::Index(i)] - A[i].dot(y) + lambda[Eigen::Index(i)] / rho > 0;
+    for(std::size_t i = 0; i < A.size(); ++i) active[i] = need[Eigen::Index(i)] - Ay[Eigen::Index(i)] + lambda[Eigen::Index(i)] / rho > 0;
   };
   auto largest_violation = [&] {
     double worst = 0;
-    for(std::size_t i = 0; i < A.size(); ++i) worst = std::max(worst, need[Eigen::Index(i)] - A[i].dot(y));
+    for(std::size_t i = 0; i < A.size(); ++i) worst = std::max(worst, need[Eigen::Index(i)] - Ay[Eigen::Index(i)]);
     for(const Local_row& row : E) worst = std::max(worst, std::abs(row.dot(y)));
     return worst;
   };
@@ -132,13 +134,18 @@ Eigen::VectorXd solve_push(const Eigen::MatrixXd& P, const std::vector<Local_row
       // phi along y + t d, from the products at y and along d (each trial costs the rows only).
       const Eigen::VectorXd Py = P * y, Pd = P * d;
       for(std::size_t i = 0; i < c; ++i)
-        ay[Eigen::Index(i)] = need[Eigen::Index(i)] - A[i].dot(y) + lambda[Eigen::Index(i)] / rho, ad[Eigen::Index(i)] = A[i].dot(d);
+        ay[Eigen::Index(i)] = need[Eigen::Index(i)] - Ay[Eigen::Index(i)] + lambda[Eigen::Index(i)] / rho, ad[Eigen::Index(i)] = A[i].dot(d);
       for(std::size_t j = 0; j < h; ++j) ey[Eigen::Index(j)] = E[j].dot(y) + mu[Eigen::Index(j)] / rho, ed[Eigen::Index(j)] = E[j].dot(d);
+      // Only rows positive somewhere on [0, 1] enter phi there (g is linear in t).
+      std::vector<Eigen::Index> touching;
+      for(std::size_t i = 0; i < c; ++i)
+        if(ay[Eigen::Index(i)] > 0 || ay[Eigen::Index(i)] - ad[Eigen::Index(i)] > 0) touching.push_back(Eigen::Index(i));
+      const double dPy = d.dot(Py), dPd = d.dot(Pd);
       auto phi = [&](double t) {
-        double value = t * d.dot(Py) + 0.5 * t * t * d.dot(Pd);
-        for(std::size_t i = 0; i < c; ++i)
+        double value = t * dPy + 0.5 * t * t * dPd;
+        for(Eigen::Index i : touching)
         {
-          const double g = ay[Eigen::Index(i)] - t * ad[Eigen::Index(i)];
+          const double g = ay[i] - t * ad[i];
           if(g > 0) value += 0.5 * rho * g * g;
         }
         for(std::size_t j = 0; j < h; ++j)
@@ -156,11 +163,12 @@ Eigen::VectorXd solve_push(const Eigen::MatrixXd& P, const std::vector<Local_row
       double t = 1;
       while(t > 1e-10 && phi(t) > value + 1e-4 * t * slope) t *= 0.5;
       y += t * d;
+      Ay += t * ad;
       find_active();
       if(t == 1 && active == factored_active) break;
     }
     for(std::size_t i = 0; i < c; ++i)
-      lambda[Eigen::Index(i)] = std::max(0.0, lambda[Eigen::Index(i)] + rho * (need[Eigen::Index(i)] - A[i].dot(y)));
+      lambda[Eigen::Index(i)] = std::max(0.0, lambda[Eigen::Index(i)] + rho * (need[Eigen::Index(i)] - Ay[Eigen::Index(i)]));
     for(std::size_t j = 0; j < h; ++j) mu[Eigen::Index(j)] += rho * E[j].dot(y);
     r.largest_violation = largest_violation();
     r.updates = outer + 1;
