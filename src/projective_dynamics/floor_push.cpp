@@ -41,7 +41,7 @@ struct Local_row
 
 // The multiplier loop of both pushes: minimises y^T P y subject to A_i y >= need_i and E_j y = 0.
 Eigen::VectorXd solve_push(const Eigen::MatrixXd& P, const std::vector<Local_row>& A, const std::vector<Local_row>& E,
-                           const Eigen::VectorXd& need, double tolerance, Floor_push_report& r, Floor_push_warm_start* warm)
+                           const Eigen::VectorXd& need, double tolerance, Floor_push_report& r, Eigen::VectorXd* multipliers)
 {
   const int m = int(P.rows());
   // The penalty: a thousand times the typical diagonal of P over the typical squared row, so the
@@ -54,11 +54,11 @@ Eigen::VectorXd solve_push(const Eigen::MatrixXd& P, const std::vector<Local_row
     for(const auto& e : row.entries) row_norms += e.second * e.second;
   row_norms /= double(std::max<std::size_t>(1, A.size() + E.size()));
   const double first_rho = 1e3 * P.diagonal().mean() / std::max(row_norms, 1e-300);
-  double rho = first_rho * (warm && warm->penalty_factor > 1 ? warm->penalty_factor : 1.0);
+  double rho = first_rho;
 
   Eigen::VectorXd y = Eigen::VectorXd::Zero(m), lambda = Eigen::VectorXd::Zero(Eigen::Index(A.size())),
                   mu = Eigen::VectorXd::Zero(Eigen::Index(E.size()));
-  if(warm && warm->multipliers.size() == lambda.size()) lambda = warm->multipliers.cwiseMax(0.0);
+  if(multipliers && multipliers->size() == lambda.size()) lambda = multipliers->cwiseMax(0.0);
   std::vector<char> factored_active, active(A.size());
   int updates_since_factoring = 0;
   Eigen::LLT<Eigen::MatrixXd> newton;
@@ -111,7 +111,6 @@ Eigen::VectorXd solve_push(const Eigen::MatrixXd& P, const std::vector<Local_row
               break;
             }
           }
-          r.rank_updates += int(changed.size());
           updates_since_factoring += int(changed.size());
         }
         if(!updated)
@@ -183,7 +182,7 @@ Eigen::VectorXd solve_push(const Eigen::MatrixXd& P, const std::vector<Local_row
     if(r.largest_violation < 0.5 * best_violation) best_violation = r.largest_violation, stalled = 0;
     else if(++stalled == 10) break;
   }
-  if(warm) warm->multipliers = lambda, warm->penalty_factor = rho / first_rho;
+  if(multipliers) *multipliers = lambda;
   return y;
 }
 
@@ -206,7 +205,7 @@ Local_row local_row(const Sparse& U, int v, std::vector<int>& local, std::vector
 
 Eigen::VectorXd smallest_floor_push(const Sparse& U, const Eigen::MatrixXd& Mr_inverse, const std::vector<int>& rows,
                                     const Eigen::VectorXd& need, const std::vector<int>& held, double tolerance,
-                                    Floor_push_report* report, Floor_push_warm_start* warm)
+                                    Floor_push_report* report, Eigen::VectorXd* multipliers)
 {
   const int k = int(U.cols());
   // The columns the rows touch, numbered locally.
@@ -225,7 +224,7 @@ Eigen::VectorXd smallest_floor_push(const Sparse& U, const Eigen::MatrixXd& Mr_i
     for(int a = 0; a < m; ++a)
       for(int b = 0; b < m; ++b) B(a, b) = Mr_inverse(columns[std::size_t(a)], columns[std::size_t(b)]);
     const Eigen::MatrixXd P = B.llt().solve(Eigen::MatrixXd::Identity(m, m));
-    const Eigen::VectorXd z = P * solve_push(P, A, E, need, tolerance, r, warm);
+    const Eigen::VectorXd z = P * solve_push(P, A, E, need, tolerance, r, multipliers);
     for(int a = 0; a < m; ++a) delta += Mr_inverse.col(columns[std::size_t(a)]) * z[a];
   }
   if(report) *report = r;
@@ -234,7 +233,7 @@ Eigen::VectorXd smallest_floor_push(const Sparse& U, const Eigen::MatrixXd& Mr_i
 
 Eigen::VectorXd smallest_floor_push_in(const Sparse& U, const Eigen::MatrixXd& Mr, const std::vector<int>& push_columns,
                                        const std::vector<int>& rows, const Eigen::VectorXd& need, const std::vector<int>& held,
-                                       double tolerance, Floor_push_report* report, Floor_push_warm_start* warm)
+                                       double tolerance, Floor_push_report* report, Eigen::VectorXd* multipliers)
 {
   const int k = int(U.cols()), m = int(push_columns.size());
   std::vector<int> local(std::size_t(k), -1), columns = push_columns;
@@ -250,7 +249,7 @@ Eigen::VectorXd smallest_floor_push_in(const Sparse& U, const Eigen::MatrixXd& M
     Eigen::MatrixXd P(m, m);
     for(int a = 0; a < m; ++a)
       for(int b = 0; b < m; ++b) P(a, b) = Mr(push_columns[std::size_t(a)], push_columns[std::size_t(b)]);
-    const Eigen::VectorXd y = solve_push(P, A, E, need, tolerance, r, warm);
+    const Eigen::VectorXd y = solve_push(P, A, E, need, tolerance, r, multipliers);
     for(int a = 0; a < m; ++a) delta[push_columns[std::size_t(a)]] = y[a];
   }
   if(report) *report = r;

@@ -89,9 +89,8 @@ struct Reduced_simulator::Impl : internal::Scene_handles
   // (U^T M U)^-1, for the floor's pushes (its columns near the contact make the push's problem).
   // Made at the first push (O(k^3)): a scene without a floor never pays for it.
   mutable Eigen::MatrixXd Mr_inverse;
-  // The last push's multipliers (per floor, per collision vertex) and penalty, to start the next.
+  // The last push's multipliers (per floor, per collision vertex), to start the next.
   std::vector<std::vector<double>> floor_multipliers;
-  std::vector<double> floor_penalty;
   Eigen::VectorXd gvec; // U^T m
   std::vector<internal::Reduced_group> groups;
   // Hyper-reduction: the sampled elements' rows on the used vertices.
@@ -347,7 +346,6 @@ struct Reduced_simulator::Impl : internal::Scene_handles
     held.erase(std::unique(held.begin(), held.end()), held.end());
     const double tolerance = floor_tolerance();
     floor_multipliers.resize(floors.size());
-    floor_penalty.resize(floors.size(), 1.0);
     for(int round = 0; round < (floors.size() > 1 ? 10 : 1); ++round)
     {
       bool moved = false;
@@ -383,16 +381,13 @@ struct Reduced_simulator::Impl : internal::Scene_handles
           for(std::size_t i = 0; i < rows.size(); ++i)
             vertices.push_back(collision[std::size_t(rows[i])]), need[Eigen::Index(i)] = 2 * tolerance - height[rows[i]];
           internal::Floor_push_report report;
-          internal::Floor_push_warm_start warm;
-          warm.multipliers.resize(Eigen::Index(rows.size()));
-          for(std::size_t i = 0; i < rows.size(); ++i) warm.multipliers[Eigen::Index(i)] = multiplier[std::size_t(rows[i])];
-          warm.penalty_factor = floor_penalty[fi];
+          Eigen::VectorXd start(Eigen::Index(rows.size()));
+          for(std::size_t i = 0; i < rows.size(); ++i) start[Eigen::Index(i)] = multiplier[std::size_t(rows[i])];
           delta = translations.empty()
-                    ? internal::smallest_floor_push(U, Mr_inverse, vertices, need, held, tolerance, &report, &warm)
-                    : internal::smallest_floor_push_in(U, Mr, translations, vertices, need, held, tolerance, &report, &warm);
+                    ? internal::smallest_floor_push(U, Mr_inverse, vertices, need, held, tolerance, &report, &start)
+                    : internal::smallest_floor_push_in(U, Mr, translations, vertices, need, held, tolerance, &report, &start);
           std::fill(multiplier.begin(), multiplier.end(), 0.0);
-          for(std::size_t i = 0; i < rows.size(); ++i) multiplier[std::size_t(rows[i])] = warm.multipliers[Eigen::Index(i)];
-          // (the penalty is not carried over: started stiff, the Newton steps shrink)
+          for(std::size_t i = 0; i < rows.size(); ++i) multiplier[std::size_t(rows[i])] = start[Eigen::Index(i)];
           timings.contact_vertices = report.constraints, timings.contact_columns = report.columns;
           timings.contact_factorizations += report.factorizations;
           Eigen::VectorXd lifted(Eigen::Index(collision.size()));

@@ -23,17 +23,8 @@ struct Floor_push_report
   int columns = 0;             ///< basis columns the contact rows touch (the problem's size)
   int constraints = 0;         ///< collision vertices in the problem (penetrating, or pushed below by the push)
   int factorizations = 0;      ///< dense factorizations of the columns x columns Newton matrix
-  int rank_updates = 0;        ///< rank-one updates of that factor (a few rows in or out of the active set)
   int updates = 0;             ///< multiplier updates of the augmented Lagrangian
   double largest_violation = 0; ///< the most any constraint is violated after the push
-};
-
-/// What the last push learnt, to start the next one near its end (a resting body's contacts and
-/// their forces change little from step to step).
-struct Floor_push_warm_start
-{
-  Eigen::VectorXd multipliers; ///< in: one per row (else ignored); out: the multipliers found
-  double penalty_factor = 1;   ///< in and out: the penalty over its default
 };
 
 /// The push `delta` (k values, one per basis column, along the floor's normal) that minimises
@@ -45,12 +36,13 @@ struct Floor_push_warm_start
 /// `delta = Minv(:, C) P y` with `P = Minv(C, C)^-1` and `y = delta_C` the minimiser of
 /// `y^T P y` under the constraints restricted to C: a problem of |C| unknowns, solved by an
 /// augmented Lagrangian with semismooth Newton steps (each a |C| x |C| Cholesky factorization;
-/// the active set of a resting body repeats, so a few per push).  `warm`, if given, starts
-/// from the multipliers and penalty it holds and returns the new ones.
+/// the active set of a resting body repeats, so a few per push).  `multipliers`, if given,
+/// holds one multiplier per row to start from (a resting body's contact forces change little
+/// from step to step; any other size starts from zero) and returns those found.
 Eigen::VectorXd smallest_floor_push(const Eigen::SparseMatrix<double, Eigen::RowMajor>& U, const Eigen::MatrixXd& Mr_inverse,
                                     const std::vector<int>& rows, const Eigen::VectorXd& need, const std::vector<int>& held,
                                     double tolerance, Floor_push_report* report = nullptr,
-                                    Floor_push_warm_start* warm = nullptr);
+                                    Eigen::VectorXd* multipliers = nullptr);
 
 /// The same push within the span of the basis columns `push_columns` only (the others do not
 /// move): `delta_T` minimises `delta_T^T Mr(T, T) delta_T` under the same constraints, a problem
@@ -60,7 +52,7 @@ Eigen::VectorXd smallest_floor_push(const Eigen::SparseMatrix<double, Eigen::Row
 Eigen::VectorXd smallest_floor_push_in(const Eigen::SparseMatrix<double, Eigen::RowMajor>& U, const Eigen::MatrixXd& Mr,
                                        const std::vector<int>& push_columns, const std::vector<int>& rows,
                                        const Eigen::VectorXd& need, const std::vector<int>& held, double tolerance,
-                                       Floor_push_report* report = nullptr, Floor_push_warm_start* warm = nullptr);
+                                       Floor_push_report* report = nullptr, Eigen::VectorXd* multipliers = nullptr);
 
 } // namespace internal
 } // namespace Projective_dynamics
