@@ -220,9 +220,7 @@ Eigen::VectorXd smallest_floor_push(const Sparse& U, const Eigen::MatrixXd& Mr_i
   if(m > 0)
   {
     // P = Minv(C, C)^-1: the metric of delta_C once the other columns take their cheapest values.
-    Eigen::MatrixXd B(m, m);
-    for(int a = 0; a < m; ++a)
-      for(int b = 0; b < m; ++b) B(a, b) = Mr_inverse(columns[std::size_t(a)], columns[std::size_t(b)]);
+    const Eigen::MatrixXd B = Mr_inverse(columns, columns);
     const Eigen::MatrixXd P = B.llt().solve(Eigen::MatrixXd::Identity(m, m));
     const Eigen::VectorXd z = P * solve_push(P, A, E, need, tolerance, r, multipliers);
     for(int a = 0; a < m; ++a) delta += Mr_inverse.col(columns[std::size_t(a)]) * z[a];
@@ -246,9 +244,7 @@ Eigen::VectorXd smallest_floor_push_in(const Sparse& U, const Eigen::MatrixXd& M
   Eigen::VectorXd delta = Eigen::VectorXd::Zero(k);
   if(m > 0)
   {
-    Eigen::MatrixXd P(m, m);
-    for(int a = 0; a < m; ++a)
-      for(int b = 0; b < m; ++b) P(a, b) = Mr(push_columns[std::size_t(a)], push_columns[std::size_t(b)]);
+    const Eigen::MatrixXd P = Mr(push_columns, push_columns);
     const Eigen::VectorXd y = solve_push(P, A, E, need, tolerance, r, multipliers);
     for(int a = 0; a < m; ++a) delta[push_columns[std::size_t(a)]] = y[a];
   }

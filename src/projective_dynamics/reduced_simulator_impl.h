@@ -86,9 +86,10 @@ struct Reduced_simulator::Impl : internal::Scene_handles
   std::vector<int> samples;
   Eigen::MatrixXd Mr;
   Eigen::LLT<Eigen::MatrixXd> Mr_llt;
-  // (U^T M U)^-1, for the floor's pushes (its columns near the contact make the push's problem).
-  // Made at the first push (O(k^3)): a scene without a floor never pays for it.
-  mutable Eigen::MatrixXd Mr_inverse;
+  // (U^T M U)^-1, for the floor's pushes with a basis handed in (its columns near the contact
+  // make the push's problem).  Made at the first push (O(k^3)): a scene without a floor, or with
+  // the samples' basis, never pays for it.
+  Eigen::MatrixXd Mr_inverse;
   // The last push's multipliers (per floor, per collision vertex), to start the next.
   std::vector<std::vector<double>> floor_multipliers;
   Eigen::VectorXd gvec; // U^T m
