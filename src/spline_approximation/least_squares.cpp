@@ -7,9 +7,11 @@
 
 #include <CGAL/Model_reduction/internal/Thread_pool.h>
 
+#include <Eigen/LU>
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <tuple>
@@ -156,23 +158,104 @@ int over_sample_parts(Eigen::Index n, const Part& part)
   return parts;
 }
 
-// The normal equations A^T A X = A^T P of an open curve's fit, each sample's basis functions
-// computed in registers and used at once: no n x (k + 1) design matrix, whose allocation (its
-// page faults included) cost as much as the arithmetic on a million samples.
+// The k + 1 basis functions nonzero on span s as polynomials in the span's own variable
+// tau = (t - U[s]) / h in [0, 1]: C(a, p) is the coefficient of tau^p in N_{s-k+a}.  Taken from
+// the values at tau = i / k through the inverse Vandermonde matrix of those points (entries at
+// most 27 for k = 3: well conditioned).  Sums over a span's samples then need only the moments
+// of tau, a handful of additions per sample instead of a basis evaluation.
+typedef Eigen::Matrix<double, 4, 4> Span_coefficients;
+
+Span_coefficients span_polynomials(const Eigen::VectorXd& U, int k, Eigen::Index s)
+{
+  // inverse_vandermonde[k]: the inverse of V(i, p) = (i / k)^p, 0 <= i, p <= k (identity beyond).
+  static const std::array<Span_coefficients, 4> inverse_vandermonde = [] {
+    std::array<Span_coefficients, 4> inverse;
+    for(int degree = 0; degree <= 3; ++degree) {
+      Eigen::MatrixXd V(degree + 1, degree + 1);
+      for(int i = 0; i <= degree; ++i)
+        for(int p = 0; p <= degree; ++p) V(i, p) = std::pow(degree > 0 ? double(i) / degree : 0.0, p);
+      inverse[std::size_t(degree)].setIdentity();
+      inverse[std::size_t(degree)].topLeftCorner(degree + 1, degree + 1) = V.inverse();
+    }
+    return inverse;
+  }();
+  const double a = U[s], h = U[s + 1] - a;
+  Span_coefficients values = Span_coefficients::Zero(); // values(i, b): N_{s-k+b} at tau_i
+  for(int i = 0; i <= k; ++i) {
+    double N[4];
+    basis_functions(U, k, s, a + h * (k > 0 ? double(i) / k : 0.0), N);
+    for(int b = 0; b <= k; ++b) values(i, b) = N[b];
+  }
+  Span_coefficients C = Span_coefficients::Zero();
+  C.topLeftCorner(k + 1, k + 1) =
+      (inverse_vandermonde[std::size_t(k)].topLeftCorner(k + 1, k + 1) * values.topLeftCorner(k + 1, k + 1)).transpose();
+  return C;
+}
+
+// Calls run(s, j0, j1) for each run [j0, j1) of the samples begin .. end - 1 that lie in one
+// span s (the parameters increase: a run is found by a binary search).
+template <class Run>
+void for_each_span_run(const Basis& basis, const Eigen::VectorXd& t, Eigen::Index begin, Eigen::Index end, const Run& run)
+{
+  const Eigen::VectorXd& U = basis.U;
+  const Eigen::Index last_span = U.size() - basis.degree - 2;
+  for(Eigen::Index j = begin; j < end;) {
+    const Eigen::Index s = find_span(U, basis.degree, t[j]);
+    const Eigen::Index j1 =
+        s == last_span ? end : Eigen::Index(std::lower_bound(t.data() + j, t.data() + end, U[s + 1]) - t.data());
+    run(s, j, std::max(j1, j + 1));
+    j = std::max(j1, j + 1);
+  }
+}
+
+// The reciprocal of a span's length, 0 for an empty span (whose samples then all sit at tau 0).
+double inverse_length(const Eigen::VectorXd& U, Eigen::Index s)
+{
+  const double h = U[s + 1] - U[s];
+  return h > 0 ? 1.0 / h : 0.0;
+}
+
+// The normal equations A^T A X = A^T P of an open curve's fit, span by span from the moments of
+// tau: no n x (k + 1) design matrix (its allocation cost as much as the arithmetic on a million
+// samples) and no basis evaluation per sample.
 void open_normal_equations(const Basis& basis, const Eigen::VectorXd& t, const Eigen::MatrixXd& P, Spd_matrix& AtA,
                            Eigen::MatrixXd& AtP)
 {
   const int k = basis.degree;
+  const Eigen::Index D = P.cols();
   auto accumulate = [&](Banded_spd& band, Eigen::MatrixXd& rhs, Eigen::Index begin, Eigen::Index end) {
-    Basis_at at(basis);
-    double N[4];
-    for(Eigen::Index j = begin; j < end; ++j) {
-      const Eigen::Index first = at(t[j], N);
-      for(int a = 0; a <= k; ++a) {
-        for(int b = 0; b <= a; ++b) band.at(first + a, first + b) += N[a] * N[b];
-        for(Eigen::Index c = 0; c < P.cols(); ++c) rhs(first + a, c) += N[a] * P(j, c);
+    Eigen::MatrixXd nu(4, D); // nu(p, c) = sum tau^p P(j, c)
+    for_each_span_run(basis, t, begin, end, [&](Eigen::Index s, Eigen::Index j0, Eigen::Index j1) {
+      const double a = basis.U[s], inverse_h = inverse_length(basis.U, s);
+      double mu[7] = {}; // sum tau^p, p <= 2k
+      nu.setZero();
+      for(Eigen::Index j = j0; j < j1; ++j) {
+        const double tau = (t[j] - a) * inverse_h;
+        double power[7];
+        power[0] = 1;
+        for(int p = 1; p <= 2 * k; ++p) power[p] = power[p - 1] * tau;
+        for(int p = 0; p <= 2 * k; ++p) mu[p] += power[p];
+        for(Eigen::Index c = 0; c < D; ++c) {
+          const double x = P(j, c);
+          for(int p = 0; p <= k; ++p) nu(p, c) += power[p] * x;
+        }
       }
-    }
+      const Span_coefficients C = span_polynomials(basis.U, k, s);
+      const Eigen::Index first = s - k;
+      for(int i = 0; i <= k; ++i) {
+        for(int b = 0; b <= i; ++b) {
+          double sum = 0;
+          for(int p = 0; p <= k; ++p)
+            for(int q = 0; q <= k; ++q) sum += C(i, p) * C(b, q) * mu[p + q];
+          band.at(first + i, first + b) += sum;
+        }
+        for(Eigen::Index c = 0; c < D; ++c) {
+          double sum = 0;
+          for(int p = 0; p <= k; ++p) sum += C(i, p) * nu(p, c);
+          rhs(first + i, c) += sum;
+        }
+      }
+    });
   };
   Banded_spd& band = AtA.band();
   if(t.size() < parallel_samples) return accumulate(band, AtP, 0, t.size());
@@ -188,29 +271,39 @@ void open_normal_equations(const Basis& basis, const Eigen::VectorXd& t, const E
 }
 
 // Per sample, the distance between the sample and the spline at its parameter, into `errors`
-// when it is not null; returns the largest and the sum of squares.
+// when it is not null; returns the largest and the sum of squares.  Span by span, the spline
+// as a polynomial in tau (Horner).
 std::pair<double, double> open_errors(const Basis& basis, const Eigen::VectorXd& t, const Eigen::MatrixXd& P,
                                       const Eigen::MatrixXd& X, Eigen::VectorXd* errors)
 {
   const int k = basis.degree;
+  const Eigen::Index D = P.cols();
   double largest[max_sample_parts] = {}, sum[max_sample_parts] = {};
-  const int parts = over_sample_parts(t.size(), [&](int p, Eigen::Index begin, Eigen::Index end) {
-    Basis_at at(basis);
-    double N[4], part_sum = 0, part_largest = 0; // locals: the parts' sums share a cache line
-    for(Eigen::Index j = begin; j < end; ++j) {
-      const Eigen::Index first = at(t[j], N);
-      double squared = 0;
-      for(Eigen::Index c = 0; c < P.cols(); ++c) {
-        double value = -P(j, c);
-        for(int a = 0; a <= k; ++a) value += N[a] * X(first + a, c);
-        squared += value * value;
+  const int parts = over_sample_parts(t.size(), [&](int part, Eigen::Index begin, Eigen::Index end) {
+    double part_sum = 0, part_largest = 0; // locals: the parts' sums share a cache line
+    Eigen::MatrixXd g(4, D); // g(p, c): the coefficient of tau^p of coordinate c
+    for_each_span_run(basis, t, begin, end, [&](Eigen::Index s, Eigen::Index j0, Eigen::Index j1) {
+      const double a = basis.U[s], inverse_h = inverse_length(basis.U, s);
+      const Span_coefficients C = span_polynomials(basis.U, k, s);
+      g.setZero();
+      for(int i = 0; i <= k; ++i)
+        for(int p = 0; p <= k; ++p) g.row(p) += C(i, p) * X.row(s - k + i);
+      for(Eigen::Index j = j0; j < j1; ++j) {
+        const double tau = (t[j] - a) * inverse_h;
+        double squared = 0;
+        for(Eigen::Index c = 0; c < D; ++c) {
+          double value = g(k, c);
+          for(int p = k - 1; p >= 0; --p) value = value * tau + g(p, c);
+          const double r = P(j, c) - value;
+          squared += r * r;
+        }
+        part_sum += squared;
+        part_largest = std::max(part_largest, squared);
+        if(errors) (*errors)[j] = std::sqrt(squared);
       }
-      part_sum += squared;
-      part_largest = std::max(part_largest, squared);
-      if(errors) (*errors)[j] = std::sqrt(squared);
-    }
-    sum[p] = part_sum;
-    largest[p] = part_largest;
+    });
+    sum[part] = part_sum;
+    largest[part] = part_largest;
   });
   double total = 0, most = 0;
   for(int p = 0; p < parts; ++p) total += sum[p], most = std::max(most, largest[p]);
