@@ -215,6 +215,32 @@ double inverse_length(const Eigen::VectorXd& U, Eigen::Index s)
   return h > 0 ? 1.0 / h : 0.0;
 }
 
+// The moments of one span's samples [j0, j1): mu[p] = sum tau^p (p <= 2K), nu(p, c) = sum
+// tau^p P(j, c) (p <= K), tau = (t - a) * inverse_h.  The degree is a template parameter so
+// that the powers stay in registers; each coordinate is its own pass over a contiguous column.
+template <int K>
+void span_moments(const Eigen::VectorXd& t, const Eigen::MatrixXd& P, Eigen::Index j0, Eigen::Index j1, double a,
+                  double inverse_h, double* mu, Eigen::MatrixXd& nu)
+{
+  double m[2 * K + 1] = {};
+  for(Eigen::Index j = j0; j < j1; ++j) {
+    const double tau = (t[j] - a) * inverse_h;
+    double power = 1;
+    for(int p = 0; p <= 2 * K; ++p, power *= tau) m[p] += power;
+  }
+  for(int p = 0; p <= 2 * K; ++p) mu[p] = m[p];
+  for(Eigen::Index c = 0; c < P.cols(); ++c) {
+    const double* x = &P(0, c);
+    double n[K + 1] = {};
+    for(Eigen::Index j = j0; j < j1; ++j) {
+      const double tau = (t[j] - a) * inverse_h;
+      double power = x[j];
+      for(int p = 0; p <= K; ++p, power *= tau) n[p] += power;
+    }
+    for(int p = 0; p <= K; ++p) nu(p, c) = n[p];
+  }
+}
+
 // The normal equations A^T A X = A^T P of an open curve's fit, span by span from the moments of
 // tau: no n x (k + 1) design matrix (its allocation cost as much as the arithmetic on a million
 // samples) and no basis evaluation per sample.
@@ -224,21 +250,14 @@ void open_normal_equations(const Basis& basis, const Eigen::VectorXd& t, const E
   const int k = basis.degree;
   const Eigen::Index D = P.cols();
   auto accumulate = [&](Banded_spd& band, Eigen::MatrixXd& rhs, Eigen::Index begin, Eigen::Index end) {
-    Eigen::MatrixXd nu(4, D); // nu(p, c) = sum tau^p P(j, c)
+    Eigen::MatrixXd nu(4, D);
     for_each_span_run(basis, t, begin, end, [&](Eigen::Index s, Eigen::Index j0, Eigen::Index j1) {
       const double a = basis.U[s], inverse_h = inverse_length(basis.U, s);
-      double mu[7] = {}; // sum tau^p, p <= 2k
-      nu.setZero();
-      for(Eigen::Index j = j0; j < j1; ++j) {
-        const double tau = (t[j] - a) * inverse_h;
-        double power[7];
-        power[0] = 1;
-        for(int p = 1; p <= 2 * k; ++p) power[p] = power[p - 1] * tau;
-        for(int p = 0; p <= 2 * k; ++p) mu[p] += power[p];
-        for(Eigen::Index c = 0; c < D; ++c) {
-          const double x = P(j, c);
-          for(int p = 0; p <= k; ++p) nu(p, c) += power[p] * x;
-        }
+      double mu[7];
+      switch(k) {
+      case 1: span_moments<1>(t, P, j0, j1, a, inverse_h, mu, nu); break;
+      case 2: span_moments<2>(t, P, j0, j1, a, inverse_h, mu, nu); break;
+      default: span_moments<3>(t, P, j0, j1, a, inverse_h, mu, nu); break;
       }
       const Span_coefficients C = span_polynomials(basis.U, k, s);
       const Eigen::Index first = s - k;
