@@ -13,12 +13,14 @@
 // refitted, and kept if the goal allows it (the bound still met, or the objective lower); the
 // next-cheapest are tried before giving up.
 //
-// A sweep reads each sample of a knot's two spans once: the moments of the left span (about
-// its left end) grow as the trial knot moves right, those of the right span (about its right
-// end) are the window's minus what moved.  Moments about a span's own end avoid the
+// A sweep takes the moments of the left span (about its left end) as the trial knot moves
+// right, those of the right span (about its right end) as the window's minus what moved, from
+// sums over blocks of samples (sample_moments.h): moments about a span's own end, without the
 // cancellation of prefix sums over the whole curve at a million samples.
 
 #include <CGAL/Spline_approximation/internal/spline_numerics.h>
+
+#include "sample_moments.h"
 
 #include <Eigen/Cholesky>
 
@@ -32,30 +34,6 @@ namespace CGAL {
 namespace Spline_approximation {
 namespace internal {
 namespace {
-
-// Sums over the samples of a span, about the span's end e: count, sum of d = |t - e|, of d^2,
-// of P, of d P, of |P|^2.
-struct Moments
-{
-  double n = 0, d1 = 0, d2 = 0, pp = 0;
-  Eigen::RowVectorXd p, dp;
-  explicit Moments(Eigen::Index D) : p(Eigen::RowVectorXd::Zero(D)), dp(Eigen::RowVectorXd::Zero(D)) {}
-  // Adds (sign 1) or removes (-1) the sample at P (coordinates `stride` apart) at distance d.
-  void add(double d, const double* P, Eigen::Index stride, double sign = 1)
-  {
-    n += sign;
-    d1 += sign * d;
-    d2 += sign * d * d;
-    double squared = 0;
-    for(Eigen::Index k = 0; k < p.size(); ++k) {
-      const double x = P[k * stride];
-      p[k] += sign * x;
-      dp[k] += sign * d * x;
-      squared += x * x;
-    }
-    pp += sign * squared;
-  }
-};
 
 // A span's squared error as a quadratic in its end vertices xs (start) and xe (end):
 // E - 2 xs.us - 2 xe.ue + ss |xs|^2 + 2 se xs.xe + ee |xe|^2.
@@ -164,7 +142,8 @@ class Degree_one_search
 {
 public:
   Degree_one_search(const Problem& p)
-    : p_(p), P_(*p.samples), D_(P_.cols()), n_(p.t.size()), m_(p.candidates.size()), closed_(p.closed)
+    : p_(p), P_(*p.samples), D_(P_.cols()), n_(p.t.size()), m_(p.candidates.size()), closed_(p.closed),
+      blocks_(p.t, P_)
   {}
 
   Knots unwrapped(const std::vector<std::size_t>& kept) const { return Knots(kept.begin(), kept.end()); }
@@ -218,11 +197,20 @@ public:
   }
   bool has_vertex(const Knots& vk, Index v) const { return closed_ || (v >= -1 && v <= Index(vk.size())); }
 
-  // Moments of the samples [J0, J1) about e (d = t - e about a start, e - t about an end).
+  // Adds sign times the moments of the samples [J0, J1) about e (d = t - e about a start,
+  // e - t about an end) to m, period by period.
+  void add_moments(Moments& m, Index J0, Index J1, double e, bool about_start, double sign = 1) const
+  {
+    while(J0 < J1) {
+      const Index period = floor_div(J0, n_), j0 = J0 - period * n_, j1 = std::min(n_, J1 - period * n_);
+      blocks_.add(m, Eigen::Index(j0), Eigen::Index(j1), double(period), e, about_start, sign);
+      J0 = period * n_ + j1;
+    }
+  }
   Moments moments(Index J0, Index J1, double e, bool about_start) const
   {
     Moments m(D_);
-    for(Index J = J0; J < J1; ++J) m.add(about_start ? t(J) - e : e - t(J), sample(J), P_.rows());
+    add_moments(m, J0, J1, e, about_start);
     return m;
   }
   Span_quadratic span_between(const Knots& vk, Index v) const // the span from vertex v to v + 1
@@ -290,11 +278,10 @@ public:
         Place at = from, previous = from;
         for(Index c = lo; c < hi;) {
           const double u = candidate(c);
-          for(; at.j < jb && t(at.j) < u; ++at.j) {
-            const double tj = t(at.j);
-            at.left.add(tj - a, sample(at.j), P_.rows());
-            at.right.add(b - tj, sample(at.j), P_.rows(), -1);
-          }
+          const Index moved_to = std::max(at.j, std::min(jb, first_at(u)));
+          add_moments(at.left, at.j, moved_to, a, true);
+          add_moments(at.right, at.j, moved_to, b, false, -1);
+          at.j = moved_to;
           at.c = c;
           set_span_quadratic(w.spans[s2], at.left, u - a, true);
           set_span_quadratic(w.spans[s2 + 1], at.right, b - u, false);
@@ -393,6 +380,7 @@ private:
   Eigen::Index D_;
   Index n_, m_;
   bool closed_;
+  Block_moments blocks_;
 };
 
 // Sweeps and refits until the squared error falls by less than 1e-3 relative (later sweeps

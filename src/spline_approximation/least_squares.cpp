@@ -289,6 +289,32 @@ void open_normal_equations(const Basis& basis, const Eigen::VectorXd& t, const E
   }
 }
 
+// The squared distances of the samples [j0, j1) of one span to the polynomial g (g(p, c): the
+// coefficient of tau^p of coordinate c): their sum and largest, and the distances into `errors`.
+template <int K>
+void run_errors(const Eigen::VectorXd& t, const Eigen::MatrixXd& P, const Eigen::Matrix<double, 4, Eigen::Dynamic>& g,
+                Eigen::Index j0, Eigen::Index j1, double a, double inverse_h, double& sum, double& largest,
+                Eigen::VectorXd* errors)
+{
+  const Eigen::Index D = P.cols(), stride = P.rows();
+  const double* coefficients = g.data();
+  for(Eigen::Index j = j0; j < j1; ++j) {
+    const double tau = (t[j] - a) * inverse_h;
+    const double* x = P.data() + j;
+    double squared = 0;
+    for(Eigen::Index c = 0; c < D; ++c) {
+      const double* gc = coefficients + 4 * c;
+      double value = gc[K];
+      for(int p = K - 1; p >= 0; --p) value = value * tau + gc[p];
+      const double r = x[c * stride] - value;
+      squared += r * r;
+    }
+    sum += squared;
+    largest = std::max(largest, squared);
+    if(errors) (*errors)[j] = std::sqrt(squared);
+  }
+}
+
 // Per sample, the distance between the sample and the spline at its parameter, into `errors`
 // when it is not null; returns the largest and the sum of squares.  Span by span, the spline
 // as a polynomial in tau (Horner).
@@ -300,26 +326,21 @@ std::pair<double, double> open_errors(const Basis& basis, const Eigen::VectorXd&
   double largest[max_sample_parts] = {}, sum[max_sample_parts] = {};
   const int parts = over_sample_parts(t.size(), [&](int part, Eigen::Index begin, Eigen::Index end) {
     double part_sum = 0, part_largest = 0; // locals: the parts' sums share a cache line
-    Eigen::MatrixXd g(4, D); // g(p, c): the coefficient of tau^p of coordinate c
+    Eigen::Matrix<double, 4, Eigen::Dynamic> g(4, D); // g(p, c): the coefficient of tau^p of coordinate c
     for_each_span_run(basis, t, begin, end, [&](Eigen::Index s, Eigen::Index j0, Eigen::Index j1) {
       const double a = basis.U[s], inverse_h = inverse_length(basis.U, s);
       const Span_coefficients C = span_polynomials(basis.U, k, s);
       g.setZero();
       for(int i = 0; i <= k; ++i)
         for(int p = 0; p <= k; ++p) g.row(p) += C(i, p) * X.row(s - k + i);
-      for(Eigen::Index j = j0; j < j1; ++j) {
-        const double tau = (t[j] - a) * inverse_h;
-        double squared = 0;
-        for(Eigen::Index c = 0; c < D; ++c) {
-          double value = g(k, c);
-          for(int p = k - 1; p >= 0; --p) value = value * tau + g(p, c);
-          const double r = P(j, c) - value;
-          squared += r * r;
-        }
-        part_sum += squared;
-        part_largest = std::max(part_largest, squared);
-        if(errors) (*errors)[j] = std::sqrt(squared);
+      double run_sum = 0, run_largest = 0;
+      switch(k) {
+      case 1: run_errors<1>(t, P, g, j0, j1, a, inverse_h, run_sum, run_largest, errors); break;
+      case 2: run_errors<2>(t, P, g, j0, j1, a, inverse_h, run_sum, run_largest, errors); break;
+      default: run_errors<3>(t, P, g, j0, j1, a, inverse_h, run_sum, run_largest, errors); break;
       }
+      part_sum += run_sum;
+      part_largest = std::max(part_largest, run_largest);
     });
     sum[part] = part_sum;
     largest[part] = part_largest;
