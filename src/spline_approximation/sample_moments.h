@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Moments of runs of samples about a span's end, for the degree-1 knot search: per sample, or
-// for any run at once from sums over blocks of 64 and 4,096 samples.  A knot sliding over a
+// for any run at once from sums over blocks of 8, 64, 512 and 4,096 samples.  A knot sliding over a
 // span of 25,000 samples (a million samples, 40 knots) then costs a few hundred additions per
 // place instead of one per sample.  Each block's sums are taken about its own first sample and
 // shifted to the span's end in closed form, so, as with per-sample sums, no prefix sum over the
@@ -49,7 +49,7 @@ class Block_moments
 public:
   Block_moments(const Eigen::VectorXd& t, const Eigen::MatrixXd& P) : t_(t), P_(P)
   {
-    for(std::size_t l = 0; l < levels_.size(); ++l) build(levels_[l], block_sizes[l]);
+    for(std::size_t l = 0; l < levels_.size(); ++l) build(l);
   }
 
   // Adds sign times the moments of the samples [j0, j1) (0 <= j0 <= j1 <= n), their parameters
@@ -84,36 +84,54 @@ private:
   struct Level
   {
     Eigen::VectorXd anchor, n, u1, u2, pp;
-    Eigen::MatrixXd p, up;
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> p, up; // a block's coordinates side by side
   };
-  static constexpr std::array<Eigen::Index, 2> block_sizes{{64, 4096}};
+  // Each level's blocks join 8 of the level below: a run costs at most 7 samples and 7
+  // blocks of each level at either end, and one block per 4,096 samples in between.
+  static constexpr std::array<Eigen::Index, 4> block_sizes{{8, 64, 512, 4096}};
 
-  void build(Level& L, Eigen::Index size)
+  void build(std::size_t l)
   {
-    const Eigen::Index n = t_.size(), blocks = n / size, D = P_.cols(); // whole blocks only
+    Level& L = levels_[l];
+    const Eigen::Index size = block_sizes[l], blocks = t_.size() / size, D = P_.cols(); // whole blocks only
     L.anchor.resize(blocks);
     L.n = L.u1 = L.u2 = L.pp = Eigen::VectorXd::Zero(blocks);
-    L.p = L.up = Eigen::MatrixXd::Zero(blocks, D);
+    L.p.setZero(blocks, D);
+    L.up.setZero(blocks, D);
     for(Eigen::Index b = 0; b < blocks; ++b) {
       L.anchor[b] = t_[b * size];
-      for(Eigen::Index j = b * size; j < (b + 1) * size; ++j) {
-        const double u = t_[j] - L.anchor[b];
-        L.n[b] += 1;
-        L.u1[b] += u;
-        L.u2[b] += u * u;
-        for(Eigen::Index c = 0; c < D; ++c) {
-          const double x = P_(j, c);
-          L.p(b, c) += x;
-          L.up(b, c) += u * x;
-          L.pp[b] += x * x;
+      if(l == 0) {
+        for(Eigen::Index j = b * size; j < (b + 1) * size; ++j) {
+          const double u = t_[j] - L.anchor[b];
+          L.n[b] += 1;
+          L.u1[b] += u;
+          L.u2[b] += u * u;
+          for(Eigen::Index c = 0; c < D; ++c) {
+            const double x = P_(j, c);
+            L.p(b, c) += x;
+            L.up(b, c) += u * x;
+            L.pp[b] += x * x;
+          }
         }
+        continue;
+      }
+      const Level& below = levels_[l - 1];
+      const Eigen::Index ratio = size / block_sizes[l - 1];
+      for(Eigen::Index i = b * ratio; i < (b + 1) * ratio; ++i) { // about this block's first parameter
+        const double delta = below.anchor[i] - L.anchor[b];
+        L.n[b] += below.n[i];
+        L.u1[b] += below.u1[i] + below.n[i] * delta;
+        L.u2[b] += below.u2[i] + 2 * delta * below.u1[i] + below.n[i] * delta * delta;
+        L.pp[b] += below.pp[i];
+        L.p.row(b) += below.p.row(i);
+        L.up.row(b) += below.up.row(i) + delta * below.p.row(i);
       }
     }
   }
 
   const Eigen::VectorXd& t_;
   const Eigen::MatrixXd& P_;
-  std::array<Level, 2> levels_;
+  std::array<Level, 4> levels_;
 };
 
 } // namespace internal
