@@ -145,7 +145,7 @@ int main(int argc, char** argv)
                   "  7 degree 1 against Douglas-Peucker and CGAL's Polyline_simplification_2: [--svg FILE] [--targets 0.001,0.005 (fractions of the extent)] [--comparison-size 2000]\n"
                   "  [--samples-per-segment 16] [--methods greedy,penalty,exact,dp,cgal,cgal-hybrid]\n"
                   "  8 degree 1 vertex count against the exact optimum: [--gap-grid 60] [--gap-seeds 4]\n"
-                  "[--relocate-knots-up-to 131072] (degree 1: the knot relocation up to this many samples; 0 never)\n");
+                  "[--relocate-knots-up-to 1048576] (degree 1: the knot relocation up to this many samples; 0 never)\n");
       return 0;
     }
   for(int i = 1; i + 1 < argc; i += 2) {

@@ -59,8 +59,9 @@ struct Fit_options
   /// improved by a local search that slides each knot to the candidate between its neighbours
   /// where the squared error is least, and removes knots while the goal allows
   /// (`knot_relocation.cpp`).  It brings the vertex count within a few percent of the dynamic
-  /// programming optimum, at 5-20 times the heuristic's time.  0: never; `SIZE_MAX`: always.
-  std::size_t relocate_knots_up_to = std::size_t(1) << 17;
+  /// programming optimum, at 3-7 times the heuristic's time (a million samples: under a second).
+  /// 0: never; `SIZE_MAX`: always.
+  std::size_t relocate_knots_up_to = std::size_t(1) << 20;
   /// Fit a closed curve: the last sample joins the first (do not repeat it), chord length
   /// includes that closing segment, and the spline is periodic (`B_spline::closed`).  Penalty
   /// decomposition, greedy removal and brute force; the dynamic programming refuses it.

@@ -48,7 +48,7 @@ Eigen::MatrixXd points_to_matrix(const PointRange& points)
 ///   \cgalParamNBegin{rms_error_bound} the fewest knots within this root-mean-square distance (> 0); `double` \cgalParamNEnd
 ///   \cgalParamNBegin{fit_algorithm} `Fit_algorithm`; default `penalty_decomposition` \cgalParamNEnd
 ///   \cgalParamNBegin{candidate_grid_size} 0: every point's parameter is a candidate knot; g: a uniform grid of g; `std::size_t`; default 0 \cgalParamNEnd
-///   \cgalParamNBegin{relocate_knots_up_to} degree 1, up to this many samples: knots slid and removed by a local search after the heuristic (`Fit_options::relocate_knots_up_to`); `std::size_t`; default 131072 \cgalParamNEnd
+///   \cgalParamNBegin{relocate_knots_up_to} degree 1, up to this many samples: knots slid and removed by a local search after the heuristic (`Fit_options::relocate_knots_up_to`); `std::size_t`; default 1048576 \cgalParamNEnd
 ///   \cgalParamNBegin{coarse_start_above} above this many candidates the heuristics start from a coarse-to-fine knot set (`Fit_options::coarse_start_above`); `std::size_t`; default 4096 \cgalParamNEnd
 ///   \cgalParamNBegin{closed_curve} the last point joins the first (not repeated); a periodic spline; `bool`; default false \cgalParamNEnd
 ///   \cgalParamNBegin{curve_parameters} one strictly increasing parameter per point; `std::vector<double>`; default chord length \cgalParamNEnd
