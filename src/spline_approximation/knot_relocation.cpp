@@ -430,6 +430,8 @@ Spline_fit relocate_and_remove(const Problem& p, const Goal& goal, Spline_fit fi
   // (bench tables 2, 7, 8): the same vertex counts as eight rounds or fewer (a million samples: 36
   // against 38), at 0.6x the time.
   constexpr int rounds_after_removal = 2;
+  constexpr std::size_t thorough_samples = std::size_t(1) << 15;
+  constexpr int thorough_rounds = 16;
   const double n = double(p.t.size());
   while(fit.kept.size() > (p.closed ? fewest_closed_knots : 0)) {
     const Knots old_vk = search.unwrapped(fit.kept);
@@ -473,6 +475,21 @@ Spline_fit relocate_and_remove(const Problem& p, const Goal& goal, Spline_fit fi
       Spline_fit moved = relocated(p, search, trial, goal.lambda, rounds_after_removal);
       fit = holds(moved) ? std::move(moved) : std::move(trial);
       removed = true;
+    }
+    // Where no removal passes the local model, on curves of up to `thorough_samples` samples
+    // each removal is judged once more after a whole relocation (every knot, until it settles):
+    // the local model slides one knot at a time within its reach and can stop in a minimum that
+    // the whole relocation leaves.  Measured on bench table 8 (greedy): problems more than 5 %
+    // over the optimum 3 -> 2 of 60, mean gap 0.46 % -> 0.35 %, at twice the relocation's time.
+    for(std::size_t q = 0; !removed && std::size_t(p.t.size()) <= thorough_samples && q < order.size(); ++q) {
+      std::vector<std::size_t> kept = fit.kept;
+      kept.erase(kept.begin() + std::ptrdiff_t(order[q]));
+      Spline_fit moved = relocated(p, search, finish(p, kept, goal.lambda, Sample_errors::summary_only), goal.lambda,
+                                   thorough_rounds);
+      if(goal.is_bound() ? goal.met(moved) : moved.objective < fit.objective) {
+        fit = std::move(moved);
+        removed = true;
+      }
     }
     if(!removed) break;
   }
