@@ -1,14 +1,14 @@
 // Copyright (c) 2026 The Spline_approximation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The SVG path reader: a scan of the markup for <path d="...">, the transforms of the path and
-// of the elements around it, and the path-data grammar of SVG 1.1 (section 8.3).  Every error
-// names the line and column of the character where the input stops making sense.
+// The path-data grammar of SVG 1.1 (section 8.3), and the reader's entry points (the markup is
+// read in svg_markup.cpp, drawn in svg_render.cpp).  Every error names the line and column of
+// the character where the input stops making sense.
 
 #include <CGAL/Spline_approximation/Svg_paths.h>
 #include <CGAL/Spline_approximation/errors.h>
 
-#include "svg_syntax.h"
+#include "svg_document.h"
 
 #include <cctype>
 #include <cerrno>
@@ -194,12 +194,16 @@ private:
   char previous_ = 0;
 };
 
-bool starts_with(const std::string& s, std::size_t at, const char* prefix)
+} // namespace
+
+namespace svg_internal {
+
+std::vector<Bezier_contour> parse_path_data(const Located_text& in, std::size_t begin, std::size_t end)
 {
-  return s.compare(at, std::strlen(prefix), prefix) == 0;
+  return Path_data_parser(in, begin, end).parse();
 }
 
-} // namespace
+} // namespace svg_internal
 
 std::vector<Bezier_contour> parse_svg_path_data(const std::string& d, const std::string& source)
 {
@@ -211,103 +215,11 @@ Svg_paths parse_svg_paths(const std::string& s, const std::string& source)
 {
   const Located_text in(s, source);
   Svg_paths out;
-  // The open elements and the transform from each one's coordinates to the document's: an
-  // element's `transform` applies to it and everything inside it, after its own children's.
-  struct Open_element
-  {
-    std::string name;
-    Eigen::Affine2d to_document;
-    bool transformed;
-  };
-  std::vector<Open_element> open_elements;
-  std::size_t at = 0;
-  // Skips to the end of a construct opened at `open`, or fails naming what is unterminated.
-  auto skip_to = [&](std::size_t open, const char* close, const char* what) {
-    const std::size_t e = s.find(close, open);
-    if(e == std::string::npos) in.fail(open, std::string("unterminated ") + what);
-    at = e + std::strlen(close);
-  };
-  while((at = s.find('<', at)) != std::string::npos) {
-    const std::size_t open = at;
-    if(starts_with(s, at, "<!--")) { skip_to(open, "-->", "comment '<!--'"); continue; }
-    if(starts_with(s, at, "<![CDATA[")) { skip_to(open, "]]>", "CDATA section"); continue; }
-    if(starts_with(s, at, "<?")) { skip_to(open, "?>", "processing instruction '<?'"); continue; }
-    if(starts_with(s, at, "<!")) { skip_to(open, ">", "tag"); continue; }
-    if(starts_with(s, at, "</")) { // closes the innermost open element of that name (others: tolerated)
-      std::size_t i = at + 2;
-      while(i < s.size() && !is_space(s[i]) && s[i] != '>') ++i;
-      const std::string name = s.substr(at + 2, i - at - 2);
-      skip_to(open, ">", "tag");
-      for(std::size_t k = open_elements.size(); k-- > 0;)
-        if(open_elements[k].name == name) {
-          open_elements.resize(k);
-          break;
-        }
-      continue;
-    }
-    // An element's start tag: its name, then attributes up to '>' or '/>'.
-    std::size_t i = at + 1;
-    while(i < s.size() && !is_space(s[i]) && s[i] != '>' && s[i] != '/') ++i;
-    const std::string name = s.substr(at + 1, i - at - 1);
-    if(name.empty()) in.fail(open, "a '<' that starts no tag");
-    const bool path = name == "path" || (name.size() > 5 && name.compare(name.size() - 5, 5, ":path") == 0);
-    Open_element element{name, Eigen::Affine2d::Identity(), false};
-    if(!open_elements.empty()) {
-      element.to_document = open_elements.back().to_document;
-      element.transformed = open_elements.back().transformed;
-    }
-    std::vector<Bezier_contour> contours;
-    bool has_d = false;
-    std::size_t d_at = 0;
-    for(;;) {
-      while(i < s.size() && is_space(s[i])) ++i;
-      if(i >= s.size()) in.fail(open, "unterminated tag <" + name + " (no '>' before the end of the file)");
-      if(s[i] == '>' || starts_with(s, i, "/>")) {
-        at = i + (s[i] == '>' ? 1 : 2);
-        if(s[i] == '>') open_elements.push_back(element);
-        break;
-      }
-      const std::size_t name_at = i;
-      while(i < s.size() && !is_space(s[i]) && s[i] != '=' && s[i] != '>' && s[i] != '/') ++i;
-      const std::string attribute = s.substr(name_at, i - name_at);
-      if(attribute.empty()) in.fail(name_at, "unexpected '" + std::string(1, s[name_at]) + "' in tag <" + name + ">");
-      while(i < s.size() && is_space(s[i])) ++i;
-      if(i >= s.size() || s[i] != '=') in.fail(name_at, "attribute '" + attribute + "' of <" + name + "> has no value");
-      ++i;
-      while(i < s.size() && is_space(s[i])) ++i;
-      if(i >= s.size() || (s[i] != '"' && s[i] != '\''))
-        in.fail(i, "the value of attribute '" + attribute + "' is not quoted");
-      const std::size_t value_begin = i + 1, value_end = s.find(s[i], value_begin);
-      if(value_end == std::string::npos) in.fail(i, "unterminated value of attribute '" + attribute + "'");
-      i = value_end + 1;
-      if(attribute == "transform") {
-        element.to_document = element.to_document * parse_transform(in, value_begin, value_end);
-        element.transformed = true;
-        if(!element.to_document.matrix().allFinite())
-          in.fail(value_begin, "the transform, composed with those of the elements around it, is beyond double range");
-      }
-      if(path && attribute == "d") {
-        d_at = value_begin;
-        const std::size_t amp = s.find('&', value_begin);
-        if(amp < value_end) in.fail(amp, "character and entity references in path data are not supported");
-        Path_data_parser parser(in, value_begin, value_end);
-        for(Bezier_contour& c : parser.parse()) contours.push_back(std::move(c));
-        has_d = true;
-      }
-    }
-    if(has_d) { // the path's own transform may come after its d
-      for(Bezier_contour& c : contours) {
-        if(element.transformed) c = transformed(c, element.to_document);
-        for(const Bezier_segment& segment : c.segments)
-          if(!segment.control_points.allFinite() || !segment.arc.center.allFinite() || !segment.arc.axis_u.allFinite() ||
-             !segment.arc.axis_v.allFinite())
-            in.fail(d_at, "the path's transformed coordinates are beyond double range");
-        out.contours.push_back(std::move(c));
-      }
-      ++out.path_elements;
-    }
-  }
-  if(out.path_elements == 0) throw Invalid_input(source + ": no <path> element with a 'd' attribute");
+  Svg_document document = read_svg_markup(in);
+  render_svg(in, document, out);
+  if(out.path_elements + out.shape_elements == 0)
+    throw Invalid_input(source + ": no <path> with a 'd' attribute and no basic shape (<rect>, <circle>, <ellipse>, "
+                                 "<line>, <polyline>, <polygon>) is drawn");
   return out;
 }
 

@@ -43,7 +43,7 @@ void skip_separators(const std::string& s, std::size_t& at, std::size_t end, boo
 }
 
 double scan_number(const Located_text& in, std::size_t& at, std::size_t end, const std::string& what,
-                   const char* end_name)
+                   const char* end_name, bool unit_may_follow)
 {
   const std::string& s = in.text();
   const std::size_t start = at;
@@ -59,7 +59,8 @@ double scan_number(const Located_text& in, std::size_t& at, std::size_t end, con
   if(i < end && (s[i] == 'e' || s[i] == 'E')) {
     std::size_t k = i + 1;
     if(k < end && (s[k] == '+' || s[k] == '-')) ++k;
-    if(!(k < end && is_digit(s[k])))
+    if(!(k < end && is_digit(s[k])) && unit_may_follow) k = i; // "1em": no exponent
+    else if(!(k < end && is_digit(s[k])))
       in.fail(k, "the exponent of a number has no digits, found " + shown(s, k, end, end_name));
     while(k < end && is_digit(s[k])) ++k;
     i = k;

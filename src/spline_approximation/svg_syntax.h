@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Shared by the SVG reader's files (not installed): located errors, the SVG number grammar,
-// the transform attribute and the elliptical arc of path data.
+// the transform attribute, path data and its elliptical arc.
 
 #ifndef CGAL_SPLINE_APPROXIMATION_SRC_SVG_SYNTAX_H
 #define CGAL_SPLINE_APPROXIMATION_SRC_SVG_SYNTAX_H
@@ -14,6 +14,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace CGAL {
 namespace Spline_approximation {
@@ -44,8 +45,9 @@ void skip_separators(const std::string& s, std::size_t& at, std::size_t end, boo
 
 // An SVG number at `at` (no separators skipped): sign? (digits ('.' digits?)? | '.' digits)
 // (('e'|'E') sign? digits)?.  Fails with "expected <what>, found ..." where there is none.
+// `unit_may_follow`: an 'e' without exponent digits ends the number instead (the unit of "1em").
 double scan_number(const Located_text& in, std::size_t& at, std::size_t end, const std::string& what,
-                   const char* end_name);
+                   const char* end_name, bool unit_may_follow = false);
 
 // cos and sin of an angle in degrees, exact at multiples of 90.
 void cos_sin_degrees(double degrees, double& c, double& s);
@@ -54,6 +56,10 @@ void cos_sin_degrees(double degrees, double& c, double& s);
 // rotate, skewX, skewY separated by white space and/or a comma, composed left to right (the
 // rightmost applied first).  Empty: the identity.
 Eigen::Affine2d parse_transform(const Located_text& in, std::size_t begin, std::size_t end);
+
+// The path data in [begin, end) of a located text (SVG 1.1, 8.3), one contour per subpath that
+// draws something (svg_paths.cpp).
+std::vector<Bezier_contour> parse_path_data(const Located_text& in, std::size_t begin, std::size_t end);
 
 // The SVG elliptical arc from `from` to `to` (SVG 1.1, F.6.5 and F.6.6): nothing if the end
 // points are equal, a line if a radius is 0, else an arc with the radii scaled up if too small.

@@ -225,8 +225,9 @@ int fit_command(const Arguments& args)
       "        [--degree K] [--closed] -o OUT [--chart CHART.svg]",
       "Fits the spline with the fewest knots to curves (Chapter 6, SPEC 14): the samples are the rows of a\n"
       "CSV table (any number of columns; comma or space separated, '#' comments, an optional header row), the\n"
-      "vertices of an OBJ polyline, the subpaths of the <path d=...> elements of an SVG file (one fit each;\n"
-      "closed by Z; arcs are refused), or the contours of a glyph of a font (--glyph, read by FreeType; closed).\n"
+      "vertices of an OBJ polyline, the subpaths of the <path> elements and the basic shapes an SVG file draws\n"
+      "(one fit each; closed by Z or by the shape; <use>, transforms and the viewBox applied: viewport px), or\n"
+      "the contours of a glyph of a font (--glyph, read by FreeType; closed).\n"
       "SVG paths and glyphs are sampled densely from their exact Bezier segments.  With --max-error or\n"
       "--rms-error the fewest knots within that distance; with --lambda the best trade of squared error\n"
       "against lambda per knot.  Prints the knots kept and the errors.  Outputs by extension: .json (the\n"

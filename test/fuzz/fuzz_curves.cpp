@@ -1,7 +1,8 @@
 // Copyright (c) 2026 The Spline_approximation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The curve readers of Spline_approximation: BVH motion capture and SVG path data.  An input
+// The curve readers of Spline_approximation: BVH motion capture and SVG documents (paths, basic
+// shapes, <use>, viewports).  An input
 // starting with "HIERARCHY" (after white space) is BVH, anything else SVG.  What a reader
 // accepts must hold what its checks promise, write and read back the same (BVH, at 17
 // significant digits), and, when small, be fitted: the compressed motion or the sampled

@@ -79,6 +79,28 @@ file(WRITE ${CLI_OUT}/circles.svg "<svg>\n  <path d=\"M 100 0 A 100 100 0 0 1 -1
 tvf_cli_test(fit.svg_arcs_and_transforms success
              ARGS fit ${CLI_OUT}/circles.svg --degree 1 --max-error 0.5 --samples-per-segment 32
              STDOUT "subpath 1: 64 samples, closed, 34 knots, max error 0\\.282752\n  subpath 2: 64 samples, closed, 34 knots, max error 0\\.282752\n")
+# Shapes, the viewBox and <use>: a rounded rectangle and the path SVG 2 says it is (lines and
+# quarter arcs from (x + rx, y), clockwise) give the same fit, under a viewBox scaling by 2; a
+# pentagon in <defs> drawn by a rotated <use> gives its 5 corners at degree 1; a hidden group and
+# a <symbol> no <use> draws give nothing.  Made to fail once: with the viewBox's map not applied,
+# both rectangles kept 20 knots (max errors 0.417 and 0.422); with <defs> drawn, 4 curves.
+file(WRITE ${CLI_OUT}/shapes.svg
+     "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:xlink=\"http://www.w3.org/1999/xlink\"\n"
+     "     width=\"400\" height=\"200\" viewBox=\"0 0 200 100\">\n"
+     "  <defs><polygon id=\"five\" points=\"0,-40 38,-12 24,32 -24,32 -38,-12\"/></defs>\n"
+     "  <rect x=\"110\" y=\"10\" width=\"80\" height=\"80\" rx=\"30\"/>\n"
+     "  <path d=\"M 140 10 H 160 A 30 30 0 0 1 190 40 V 60 A 30 30 0 0 1 160 90 H 140 A 30 30 0 0 1 110 60\n"
+     "           V 40 A 30 30 0 0 1 140 10 Z\"/>\n"
+     "  <use xlink:href=\"#five\" x=\"50\" y=\"50\" transform=\"rotate(10 50 50)\"/>\n"
+     "  <g style=\"display: none\"><rect width=\"10\" height=\"10\"/></g><symbol><line x2=\"1\"/></symbol>\n</svg>\n")
+tvf_cli_test(fit.svg_shapes_viewbox_use success
+             ARGS fit ${CLI_OUT}/shapes.svg --degree 1 --max-error 0.5
+             STDOUT "3 curves \\(3 closed\\).*subpath 1: 128 samples, closed, 24 knots, max error 0\\.410533\n  subpath 2: 128 samples, closed, 24 knots, max error 0\\.410533\n  subpath 3: 80 samples, closed, 5 knots, max error [0-9.]+e-1[0-9]")
+file(WRITE ${CLI_OUT}/use_cycle.svg "<svg>\n<g id=\"g\">\n  <use href=\"#g\" x=\"5\"/>\n</g>\n</svg>\n")
+# Made to fail once: without the cycle check, refused for its depth instead ("line 2, column 1:
+# elements nested more than 256 deep").
+tvf_cli_test(fit.svg_use_cycle failure ARGS fit ${CLI_OUT}/use_cycle.svg --max-error 1
+             STDERR "use_cycle.svg' line 3, column 14: the <use> refers to '#g', which contains it: a cycle")
 # Refusals with line and column.  Made to fail once: with the column restarting at 0 after a
 # newline, svg_bad_number, svg_unterminated_tag and the arc refusal that svg_bad_arc_flag replaced
 # said one column less (a column count wrong on line 1 only is caught by

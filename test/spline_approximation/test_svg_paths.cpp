@@ -251,8 +251,8 @@ TEST(SvgPaths, BadMarkupRefusedWithLineAndColumn)
                       "line 1, column 6: unterminated comment");
   EXPECT_THROW_REASON(SA::parse_svg_paths("<svg><path d='M 0 0&#10;L 1 1'/></svg>", "f"), SA::Invalid_input,
                       "column 20: character and entity references");
-  EXPECT_THROW_REASON(SA::parse_svg_paths("<svg><rect width='1'/></svg>", "f"), SA::Invalid_input,
-                      "f: no <path> element with a 'd' attribute");
+  EXPECT_THROW_REASON(SA::parse_svg_paths("<svg><defs><path d='M 0 0 L 1 1'/></defs></svg>", "f"), SA::Invalid_input,
+                      "f: no <path> with a 'd' attribute and no basic shape");
   EXPECT_THROW_REASON(SA::read_svg_paths("/no/such/file.svg"), SA::Invalid_input,
                       "cannot open SVG file '/no/such/file.svg': No such file");
 }
