@@ -21,14 +21,10 @@ namespace closed_dp {
 Circle::Circle(const Problem& p, std::size_t work_limit)
   : n(p.t.size()), m(p.candidates.size()), D(p.samples->cols()),
     X_((p.samples->rowwise() - p.samples->colwise().mean()).transpose()), t_(p.t), c_(p.candidates),
-    work_limit_(work_limit)
-{}
-
-Index Circle::first_sample(Index u) const
+    first_(std::size_t(m)), work_limit_(work_limit)
 {
-  const Index period = floor_div(u, m);
-  const double c = c_[Eigen::Index(u - period * m)];
-  return period * n + Index(std::lower_bound(t_.data(), t_.data() + n, c) - t_.data());
+  for(Index u = 0; u < m; ++u)
+    first_[std::size_t(u)] = Index(std::lower_bound(t_.data(), t_.data() + n, c_[Eigen::Index(u)]) - t_.data());
 }
 
 double Circle::gap(Index from, Index to) const
@@ -48,12 +44,12 @@ void Circle::reach(Segment_sums& sums, Index end) const
   sums.end = end;
   const Index stop = first_sample(end) - (sums.forward ? 0 : 1); // backward: down to the sample at end
   const Index visits = sums.forward ? stop - sums.next : sums.next - stop;
-  if(visits <= 0) return;
-  sample_visits_ += std::size_t(visits);
+  sample_visits_ += std::size_t(std::max<Index>(visits, 0)) + 3; // a step (its bookkeeping, the line's error) as 3 samples
   if(sample_visits_ > work_limit_)
     throw Invalid_input("spline fit: the dynamic programming optimum of this closed curve is not computable here "
                         "(more than " + std::to_string(work_limit_) + " sample visits: long segments fit "
                         "within the bound and many candidates may start the curve); use fewer candidate knots");
+  if(visits <= 0) return;
   // t of sample r minus candidate u, the whole periods apart added last: no roundoff on t within a period.
   auto offset = [&](Index r, Index u) {
     const Index pr = floor_div(r, n), pu = floor_div(u, m);
@@ -78,15 +74,21 @@ void Circle::count_work(std::size_t units) const
 std::pair<Index, Index> knot_arc(const Circle& circle, double bound)
 {
   Index best_s = 0, best_w = circle.m;
-  for(Index s = 0; s < circle.m && best_w > 1; ++s) {
-    // A segment over no knot of [s, s + w) spans the samples from candidate s - 1 to s + w; it
-    // joins two distinct knots, so w <= m - 2.
-    Segment_sums sums = circle.sums_from(s - 1, true);
-    for(Index w = 1; w < best_w && w <= circle.m - 2; ++w) {
-      circle.reach(sums, s + w);
-      if(sums.line_error() > bound + 1e-9 * sums.pp) {
-        best_s = s, best_w = w;
-        break;
+  // Starts h apart miss the shortest arc by less than h (an arc holding one that must hold a knot
+  // must too): a coarse pass, then one with h a sixteenth of the arc found, so that the search
+  // costs about 32 m steps, not m times the arc.
+  for(int pass = 0; pass < 2; ++pass) {
+    const Index h = std::max<Index>(1, best_w / 16);
+    for(Index s = 0; s < circle.m && best_w > 1; s += h) {
+      // A segment over no knot of [s, s + w) spans the samples from candidate s - 1 to s + w; it
+      // joins two distinct knots, so w <= m - 2.
+      Segment_sums sums = circle.sums_from(s - 1, true);
+      for(Index w = 1; w < best_w && w <= circle.m - 2; ++w) {
+        circle.reach(sums, s + w);
+        if(sums.line_error() > bound + 1e-9 * sums.pp) {
+          best_s = s, best_w = w;
+          break;
+        }
       }
     }
   }
@@ -108,7 +110,10 @@ void add(const Circle& circle, Quadratics& Q, double a, const double* b, double 
     return vertex_below_where_within(pa, pb, pc, qa, qb, qc, limit, D);
   };
   for(std::size_t r = 0; r < Q.size(); ++r)
-    if(below(Q.a[r], &Q.b[D * r], Q.c[r], a, b, c)) return;
+    if(below(Q.a[r], &Q.b[D * r], Q.c[r], a, b, c)) {
+      circle.count_work(r + 1);
+      return;
+    }
   std::size_t w = 0;
   for(std::size_t r = 0; r < Q.size(); ++r) {
     if(below(a, b, c, Q.a[r], &Q.b[D * r], Q.c[r])) continue;
@@ -176,6 +181,7 @@ Completion_bounds::Completion_bounds(const Circle& circle, Index j0, Index last,
   at(0, end).c = {0};
   at(0, end).b.assign(D, 0.0);
   std::vector<double> nb(D);
+  Segment seg;
   for(Index v = end; v > j0 + 1; v = v == end ? last : v - 1) // no knot between last and the end
     for(std::size_t r = 0; r < L; ++r) {
       const Quadratics& Q = at(r, v);
@@ -189,7 +195,8 @@ Completion_bounds::Completion_bounds(const Circle& circle, Index j0, Index last,
         circle.reach(sums, u);
         if(sums.line_error() > bound + 1e-9 * sums.pp) break; // and every longer one
         if(u > last) continue; // not a knot: the segment goes on
-        const Segment seg(sums, circle.gap(u, v)); // its start vertex is v's: x_v eliminated
+        seg.set(sums, circle.gap(u, v)); // its start vertex is v's: x_v eliminated
+        circle.count_work(Q.size());
         for(std::size_t k = 0; k < Q.size(); ++k) {
           const double* b = &Q.b[D * k];
           const double A = Q.a[k] + seg.al;

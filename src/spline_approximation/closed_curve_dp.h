@@ -84,13 +84,14 @@ struct Segment_sums
 // f^2, (1 - f) p, f p, |p|^2.
 struct Segment
 {
-  double al, be, ga, q;
+  double al = 0, be = 0, ga = 0, q = 0;
   std::vector<double> u, v;
-  Segment(const Segment_sums& m, double L)
-    : al(m.e2 / (L * L)), be(m.de / (L * L)), ga(m.d2 / (L * L)), q(m.pp), u(m.ep), v(m.dp)
+  void set(const Segment_sums& m, double L) // in place: no allocation per segment once sized
   {
-    for(double& x : u) x /= L;
-    for(double& x : v) x /= L;
+    al = m.e2 / (L * L), be = m.de / (L * L), ga = m.d2 / (L * L), q = m.pp;
+    u.resize(m.ep.size());
+    v.resize(m.dp.size());
+    for(std::size_t k = 0; k < u.size(); ++k) u[k] = m.ep[k] / L, v[k] = m.dp[k] / L;
   }
 };
 
@@ -105,7 +106,11 @@ public:
   Eigen::Index D;
   double centred_squared_norm() const { return X_.squaredNorm(); }
   // The first sample at or after candidate u.
-  Index first_sample(Index u) const;
+  Index first_sample(Index u) const
+  {
+    const Index period = floor_div(u, m);
+    return period * n + first_[std::size_t(u - period * m)];
+  }
   // Candidate `to` minus candidate `from`, in t.
   double gap(Index from, Index to) const;
   // Sums over the samples from candidate `start` on (forward) or before it.
@@ -119,6 +124,7 @@ private:
   const Eigen::MatrixXd X_; // the centred samples, one per column (contiguous coordinates)
   const Eigen::VectorXd& t_;
   const Eigen::VectorXd& c_;
+  std::vector<Index> first_; // per candidate in [0, m), its first sample
   std::size_t work_limit_;
   mutable std::size_t work_ = 0, sample_visits_ = 0;
 };

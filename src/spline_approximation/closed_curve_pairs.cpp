@@ -33,13 +33,6 @@ double value_at(const double* p, const double* X, std::size_t D)
   return v;
 }
 
-// Is p <= q wherever q <= T?  Cheap refutations first: p above q at q's minimiser, or where the
-// line from p's minimiser through q's leaves {q <= T}.  Then weak duality (the S-lemma): for
-// mu >= 0, g(mu) = min over X of (1 + mu) q - p - mu T is at most min (q - p) over {q <= T}, so
-// any mu with g(mu) >= 0 proves it.  g is concave with slope q(X_mu) - T at its minimiser X_mu:
-// a bisection on the slope's sign, stopped by g >= 0 (yes) or by the tangents at the brackets,
-// which bound g from above, falling below 0 (no).  Undecided: no (the lists only grow).
-// `units` counts the work.
 // Which vertices a record does not depend on (exactly zero coefficients): 1 x0, 2 x, 3 both.
 int free_vertices(const double* p, std::size_t D)
 {
@@ -47,6 +40,13 @@ int free_vertices(const double* p, std::size_t D)
   return (p[1] == 0 && p[0] == 0 && all_zero(b, D) ? 1 : 0) | (p[1] == 0 && p[2] == 0 && all_zero(b + D, D) ? 2 : 0);
 }
 
+// Is p <= q wherever q <= T?  Cheap refutations first: p above q at q's minimiser, or where the
+// line from p's minimiser through q's leaves {q <= T}.  Then weak duality (the S-lemma): for
+// mu >= 0, g(mu) = min over X of (1 + mu) q - p - mu T is at most min (q - p) over {q <= T}, so
+// any mu with g(mu) >= 0 proves it.  g is concave with slope q(X_mu) - T at its minimiser X_mu:
+// a bisection on the slope's sign, stopped by g >= 0 (yes) or by the tangents at the brackets,
+// which bound g from above, falling below 0 (no).  Undecided: no (the lists only grow).
+// `units` counts the work.
 bool below_where_within(const double* p, const double* q, double T, std::size_t D, std::size_t& units)
 {
   ++units;

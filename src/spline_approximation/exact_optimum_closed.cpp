@@ -29,6 +29,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace CGAL {
@@ -61,6 +62,7 @@ void push(const Circle& circle, const Pair_quadratics* Q, Index from, Index last
   const std::size_t count = Q ? Q->size() : 1, D = std::size_t(circle.D);
   Segment_sums sums = circle.sums_from(from, true);
   std::vector<double> nb(2 * D), record(Pair_record::size(D));
+  Segment s;
   for(Index u = from + 1;; ++u) {
     const bool closing = u > last;
     if(closing && end < 0) break;
@@ -70,7 +72,8 @@ void push(const Circle& circle, const Pair_quadratics* Q, Index from, Index last
     if(sums.line_error() > bound + 1e-9 * sums.pp) break;
     const Target to = closing ? Target() : target(u);
     if(!closing && !to.list) continue;
-    const Segment s(sums, circle.gap(from, node));
+    s.set(sums, circle.gap(from, node));
+    circle.count_work(count);
     for(std::size_t k = 0; k < count; ++k) {
       double n00, n01, n11, nc;
       if(!Q) { // the first segment itself, in (x0, x)
@@ -173,6 +176,13 @@ Spline_fit fewest_knots(const Problem& p, const Goal& goal, const Circle& circle
                         Spline_fit best)
 {
   const Index m = circle.m;
+  // A list per candidate and knot count, twice (the completions', the paths'): past this many the
+  // memory alone (tens of bytes each, empty) would be the limit.
+  constexpr double most_lists = double(std::size_t(1) << 22);
+  if(double(best.kept.size()) * double(m) > most_lists)
+    throw Invalid_input("spline fit: the dynamic programming optimum of this closed curve is not computable here (" +
+                        std::to_string(best.kept.size()) + " knots may be needed over " + std::to_string(m) +
+                        " candidates: a list per candidate and knot count); use fewer candidate knots");
   const double bound = budget + slack;
   const auto [s, w] = knot_arc(circle, bound);
   for(Index j0 = s; j0 < s + w; ++j0) {
@@ -217,6 +227,17 @@ Spline_fit fewest_knots(const Problem& p, const Goal& goal, const Circle& circle
   return best;
 }
 
+// The heuristic answer the DP starts from (its bound): greedy removal, from the coarse-to-fine
+// start on many candidates as fit_spline's default does (from every candidate it would take
+// minutes on a hundred thousand), then relocated.
+Spline_fit heuristic_answer(const Problem& p, const Goal& goal)
+{
+  constexpr Eigen::Index coarse_start_above = 4096;
+  if(p.candidates.size() <= coarse_start_above) return relocate_and_remove(p, goal, greedy_removal(p, goal));
+  const std::vector<std::size_t> start = coarse_start(p, goal, 0.5);
+  return relocate_and_remove(p, goal, greedy_removal(p, goal, &start));
+}
+
 } // namespace
 
 Spline_fit closed_dynamic_programming(const Problem& p, const Goal& goal, std::size_t work_limit)
@@ -228,13 +249,13 @@ Spline_fit closed_dynamic_programming(const Problem& p, const Goal& goal, std::s
   const Spline_fit constant = finish(p, {}, goal.lambda); // no knot or one: a constant either way
   if(circle.m < 2) return constant;
   if(!goal.is_bound()) {
-    Spline_fit heuristic = relocate_and_remove(p, goal, greedy_removal(p, goal));
+    Spline_fit heuristic = heuristic_answer(p, goal);
     return least_objective(p, circle, goal.lambda, slack,
                            constant.objective <= heuristic.objective ? constant : std::move(heuristic));
   }
   // The heuristic's knot count caps the layers; nothing meets the bound if every candidate does not.
   if(goal.met(constant)) return constant;
-  Spline_fit best = relocate_and_remove(p, goal, greedy_removal(p, goal));
+  Spline_fit best = heuristic_answer(p, goal);
   if(!goal.met(best)) {
     std::vector<std::size_t> every(static_cast<std::size_t>(circle.m));
     for(std::size_t i = 0; i < every.size(); ++i) every[i] = i;

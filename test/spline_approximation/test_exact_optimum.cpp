@@ -180,9 +180,9 @@ TEST(ExactOptimum, ClosedCurveDynamicProgrammingEqualsBruteForce)
 // them), the seam in the middle of an edge: the DP keeps exactly the corners and interpolates,
 // in both modes.  An irregular hexagon, unevenly sampled edges.
 // The heuristic answer the DP starts from (its bound) already has these corners, so only with it
-// replaced by the constant fit does this test see the DP alone, which then recovers them too
-// (in 8 s; the brute-force test above also passes so).  Made to fail once that way: with the
-// whole periods left out of the samples' offsets from the candidates (the seam), both modes kept
+// replaced by the constant fit does this test see the DP alone, which then recovers them too (the
+// brute-force test above also passes so).  Made to fail once that way: with the whole periods left
+// out of the samples' offsets from the candidates (the seam), both modes kept
 // {0, 5, 19, 26, 38, 48, 64, 66, 67}: three knots too many around the seam.
 TEST(ExactOptimum, ClosedPolygonRecoveredByDynamicProgramming)
 {
