@@ -132,6 +132,7 @@ int main(int argc, char** argv)
   int samples_per_segment = 16;
   std::size_t gap_grid = 60;
   unsigned gap_seeds = 4;
+  std::string gap_curves = "open";
   std::setvbuf(stdout, nullptr, _IOLBF, 0); // rows appear as they are measured, also into a file
   for(int i = 1; i < argc; ++i)
     if(std::string(argv[i]) == "--help") {
@@ -144,7 +145,7 @@ int main(int argc, char** argv)
                   "  [--motion-bounds 0.1,0.5,1,2] [--bvh a.bvh,b.bvh] [--motion-algorithms greedy,penalty]\n"
                   "  7 degree 1 against Douglas-Peucker and CGAL's Polyline_simplification_2: [--svg FILE] [--targets 0.001,0.005 (fractions of the extent)] [--comparison-size 2000]\n"
                   "  [--samples-per-segment 16] [--methods greedy,penalty,exact,dp,cgal,cgal-hybrid]\n"
-                  "  8 degree 1 vertex count against the exact optimum: [--gap-grid 60] [--gap-seeds 4]\n"
+                  "  8 degree 1 vertex count against the exact optimum: [--gap-grid 60] [--gap-seeds 4] [--gap-curves open,closed]\n"
                   "[--relocate-knots-up-to 1048576] (degree 1: the knot relocation up to this many samples; 0 never)\n");
       return 0;
     }
@@ -160,6 +161,7 @@ int main(int argc, char** argv)
     else if(a == "--coarse-start-above") coarse_start_above = std::size_t(std::atoll(v.c_str()));
     else if(a == "--gap-grid") gap_grid = std::size_t(std::atoll(v.c_str()));
     else if(a == "--gap-seeds") gap_seeds = unsigned(std::atoi(v.c_str()));
+    else if(a == "--gap-curves") gap_curves = v;
     else if(a == "--relocate-knots-up-to") relocate_knots_up_to = std::size_t(std::atoll(v.c_str()));
     else if(a == "--motion-frames") motion.frames = std::atol(v.c_str());
     else if(a == "--motion-noise") motion.noise_degrees = std::atof(v.c_str());
@@ -289,6 +291,8 @@ int main(int argc, char** argv)
     curves.push_back(std::move(rose));
     bench_spline::polyline_comparison(curves, targets, methods);
   }
-  if(table('8')) bench_spline::optimum_gap_table(gap_grid, gap_seeds);
+  if(table('8'))
+    bench_spline::optimum_gap_table(gap_grid, gap_seeds, gap_curves.find("open") != std::string::npos,
+                                    gap_curves.find("closed") != std::string::npos);
   return 0;
 }

@@ -12,6 +12,7 @@
 // that lies above another everywhere is dropped (exact pairwise test), which keeps the lists
 // short on curve data.  Penalty mode charges lambda per interior node; bound mode (RMS) runs
 // the same recursion layered by the number of knots and stops at the first count that meets it.
+// Closed curves: exact_optimum_closed.cpp.
 //
 // Brute force: every subset of up to max_brute_force_candidates candidates, each fitted.
 
@@ -157,6 +158,7 @@ Quadratics start(Eigen::Index D)
 
 Spline_fit dynamic_programming(const Problem& p, const Goal& goal)
 {
+  if(p.closed) return closed_dynamic_programming(p, goal);
   Degree_one_dp dp(p);
   const Eigen::Index m = dp.m(), D = dp.dim();
   // Slack on the pruning bounds, so that roundoff never prunes the optimum itself: the values

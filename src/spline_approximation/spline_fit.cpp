@@ -222,9 +222,6 @@ Spline_fit fit_spline(const Eigen::MatrixXd& samples, const Eigen::VectorXd& par
   case Fit_algorithm::dynamic_programming:
     if(options.degree != 1)
       throw Invalid_input("spline fit: the dynamic programming optimum is known for degree 1 only");
-    if(p.closed)
-      throw Invalid_input("spline fit: the dynamic programming optimum is for open curves only (a closed curve has "
-                          "no first node to start the recursion from; use brute force or a heuristic)");
     if(goal.max_error)
       throw Invalid_input("spline fit: the dynamic programming optimum is known for a penalty or an RMS bound, "
                           "not a max error bound (use brute force on small problems)");

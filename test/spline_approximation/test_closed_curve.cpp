@@ -4,9 +4,11 @@
 // Closed curves (periodic splines) against independent truth: a periodic spline built in
 // truncated-power form recovered at machine precision with exactly its knots; invariance to
 // the starting sample; a polygon fitted by degree 1; the lambda limits (every knot; the mean
-// of the samples, the only periodic polynomial); bad input refused with the reason.
+// of the samples, the only periodic polynomial); bad input refused with the reason.  The exact
+// optimum of closed polylines is tested with the others in test_exact_optimum.cpp.
 
 #include <CGAL/Spline_approximation/approximate_curve.h>
+#include <CGAL/Spline_approximation/internal/spline_numerics.h>
 
 #include "spline_test_data.h"
 
@@ -185,7 +187,8 @@ TEST(ClosedCurve, LambdaLimits)
 }
 
 // Made to fail once: without the closed-curve sample count check, two samples of degree 1 were
-// accepted (the open curve's rule) and the test's message search failed.
+// accepted (the open curve's rule) and the test's message search failed; the closed DP's work
+// limit disabled, the too-large problem was "accepted".
 TEST(ClosedCurve, BadInputRefusedWithTheReason)
 {
   auto refusal = [](const Eigen::MatrixXd& P, const SA::Fit_options& o) -> std::string {
@@ -209,8 +212,32 @@ TEST(ClosedCurve, BadInputRefusedWithTheReason)
   EXPECT_NE(refusal(repeated, closed_options(2, SA::Fit_algorithm::penalty_decomposition, 1e-3))
                 .find("the last sample of a closed curve equals the first"),
             std::string::npos);
-  EXPECT_NE(refusal(P, closed_options(1, SA::Fit_algorithm::dynamic_programming, 1e-3)).find("open curves only"),
+  // The dynamic programming takes closed curves of degree 1 with a penalty or an RMS bound only.
+  EXPECT_EQ(refusal(P, closed_options(1, SA::Fit_algorithm::dynamic_programming, 1e-3)), "accepted");
+  SA::Fit_options max_bound = closed_options(1, SA::Fit_algorithm::dynamic_programming, 0);
+  max_bound.penalty.reset();
+  max_bound.max_error = 0.05;
+  EXPECT_NE(refusal(P, max_bound).find("not a max error bound"), std::string::npos);
+  EXPECT_NE(refusal(P, closed_options(2, SA::Fit_algorithm::dynamic_programming, 1e-3)).find("degree 1 only"),
             std::string::npos);
+  // Past its work limit it refuses, with the reason (a small limit here: the default one takes
+  // seconds to reach).
+  SA::internal::Problem p;
+  p.samples = &P;
+  p.t = SA::chord_length_parameters(P, true);
+  p.degree = 1;
+  p.candidates = p.t;
+  p.closed = true;
+  SA::internal::Goal goal;
+  goal.lambda = 1e-4;
+  std::string too_large = "accepted";
+  try {
+    SA::internal::closed_dynamic_programming(p, goal, 1000);
+  } catch(const SA::Invalid_input& e) {
+    too_large = e.what();
+  }
+  EXPECT_NE(too_large.find("optimum of this closed curve is not computable here (more than 1000 "), std::string::npos)
+      << too_large;
   // The caller's parameters must fit in one period.
   SA::Fit_options o = closed_options(2, SA::Fit_algorithm::greedy_removal, 1e-3);
   EXPECT_THROW(SA::fit_spline(P, Eigen::VectorXd::LinSpaced(40, 0, 1), o), SA::Invalid_input);

@@ -28,7 +28,7 @@ namespace Spline_approximation {
 enum class Fit_algorithm {
   penalty_decomposition, ///< SPEC 14: banded SPD solves alternated with a group hard threshold while beta grows
   greedy_removal,        ///< baseline: remove the knots of smallest k-th derivative jump in batches, refit
-  dynamic_programming,   ///< exact optimum for degree 1 (ordered subsets of the candidates)
+  dynamic_programming,   ///< exact optimum for degree 1, open or closed curves (ordered subsets of the candidates)
   brute_force            ///< exact optimum over all subsets of at most `max_brute_force_candidates` candidates
 };
 
@@ -63,8 +63,8 @@ struct Fit_options
   /// 0: never; `SIZE_MAX`: always.
   std::size_t relocate_knots_up_to = std::size_t(1) << 20;
   /// Fit a closed curve: the last sample joins the first (do not repeat it), chord length
-  /// includes that closing segment, and the spline is periodic (`B_spline::closed`).  Penalty
-  /// decomposition, greedy removal and brute force; the dynamic programming refuses it.
+  /// includes that closing segment, and the spline is periodic (`B_spline::closed`).  Every
+  /// algorithm takes it (the dynamic programming, as for open curves, at degree 1 only).
   bool closed_curve = false;
 };
 
@@ -98,8 +98,8 @@ Eigen::VectorXd chord_length_parameters(const Eigen::MatrixXd& samples, bool clo
 /// \throws Invalid_input for fewer than `degree + 1` samples (closed: `max(3, degree + 1)`), NaN or infinite coordinates,
 ///         consecutive repeated samples (a zero-length piece), `lambda < 0`, a bound `<= 0`, not
 ///         exactly one of penalty and bounds, a degree outside 1..3, or an exact algorithm asked
-///         where it is not computable (dynamic programming for degree > 1 or a max-error bound,
-///         brute force on more than `max_brute_force_candidates` candidates).
+///         where it is not computable (dynamic programming for degree > 1, a max-error bound or
+///         past its work limit, brute force on more than `max_brute_force_candidates` candidates).
 Spline_fit fit_spline(const Eigen::MatrixXd& samples, const Fit_options& options);
 
 /// Same, at the caller's parameters (strictly increasing and finite; mapped affinely to [0, 1];

@@ -198,7 +198,11 @@ std::vector<std::size_t> coarse_start(const Problem& p, const Goal& goal, double
 Spline_fit penalty_decomposition(const Problem& p, double lambda);
 // Greedy removal from `start` (indices into the candidates; every candidate if null).
 Spline_fit greedy_removal(const Problem& p, const Goal& goal, const std::vector<std::size_t>* start = nullptr);
-Spline_fit dynamic_programming(const Problem& p, const Goal& goal); // degree 1
+Spline_fit dynamic_programming(const Problem& p, const Goal& goal); // degree 1, open or closed
+// Its closed curves (exact_optimum_closed.cpp): refused (Invalid_input) past `work_limit` path
+// comparisons or as many sample visits, 5-10 s each.
+constexpr std::size_t closed_dp_work_limit = std::size_t(1) << 29;
+Spline_fit closed_dynamic_programming(const Problem& p, const Goal& goal, std::size_t work_limit = closed_dp_work_limit);
 Spline_fit brute_force(const Problem& p, const Goal& goal);
 // Degree 1: knots slid to better candidates and removed while the goal allows
 // (knot_relocation.cpp); other degrees, and closed curves of fewer than five knots, are
