@@ -82,6 +82,15 @@ public:
           na -= be * be / A;
           nb -= (be / A) * B;
           nc -= B.squaredNorm() / (4 * A);
+          // A vertex that the samples leave free (one sample in the segment and x_j free
+          // before it, or none) has weight exactly 0 and no linear term; computed, both cancel
+          // to roundoff, and a later minimum over x_i would divide the one by the other
+          // (paths far below their true error).  A weight below 1e-10 of the segment's own is
+          // that roundoff: the vertex is free.
+          if(na <= 1e-10 * ga) {
+            na = 0;
+            nb.setZero();
+          }
         }
         add(dst(i), na, nb, nc + cost(i), int(j), int(k));
       }
