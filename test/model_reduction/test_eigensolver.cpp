@@ -535,7 +535,11 @@ TEST(Eigensolver, CompletenessCheckCatchesAMissingEigenvalue)
   const MR::Eigenpairs e = MR::lowest_eigenpairs(p.A, p.d, 40, p.kernel, options);
   EXPECT_TRUE(e.completeness.passed());
   EXPECT_EQ(e.completeness.inertia, e.completeness.expected);
-  EXPECT_GT(e.complete_below, e.values[39]);
+  // Every value not returned is at least the last one returned.  Not strictly: values 38, 39
+  // and 40 are one exact 3-fold icosahedral multiplet, which the count of 40 splits (they agree
+  // to 1.5e-14; on an AVX-512 machine 39 and 40 came out bit-identical, where a strict test
+  // had passed by rounding elsewhere).
+  EXPECT_GE(e.complete_below, e.values[39] * (1 - 1e-12));
   // The 40 values end inside the l = 6 cluster, whose icosahedral sub-multiplets are
   // exact: the shift must go in a real gap (the widest among values 30 on, which is
   // the one between l = 5 and l = 6).
