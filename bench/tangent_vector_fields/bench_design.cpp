@@ -30,6 +30,7 @@
 
 
 #include "bench_meshes.h"
+#include "design_preview.h"
 
 #include <CGAL/Tangent_vector_fields/Eigenfield_basis.h>
 #include <CGAL/Tangent_vector_fields/Full_spline_solver.h>
@@ -181,49 +182,6 @@ double median_of(std::vector<double> v)
 {
   std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
   return v[v.size() / 2];
-}
-
-// The editor's fur (Display_settings' defaults, as Field_design::lines draws it).
-TVF::Fur_options editor_fur()
-{
-  TVF::Fur_options fur;
-  fur.number_of_strokes = 4000;
-  fur.length = 0.02;
-  fur.scale_length_by_magnitude = true;
-  fur.magnitude_reference = TVF::Fur_options::Magnitude_reference::roots;
-  return fur;
-}
-
-// The preview's strokes against those of the whole field: the largest distance between
-// corresponding points (relative to the diagonal) and the strokes whose point or face lists
-// differ (a different walk, not only rounding).
-struct Stroke_difference
-{
-  double largest = 0;
-  int differing = 0;
-  bool same_count = true;
-};
-
-Stroke_difference compare_strokes(const std::vector<TVF::Streamline>& a, const std::vector<TVF::Streamline>& b,
-                                  double diagonal)
-{
-  Stroke_difference d;
-  d.same_count = a.size() == b.size();
-  for(std::size_t i = 0; i < std::min(a.size(), b.size()); ++i)
-  {
-    if(a[i].points.size() != b[i].points.size() || a[i].faces != b[i].faces)
-    {
-      ++d.differing;
-      continue;
-    }
-    for(std::size_t j = 0; j < a[i].points.size(); ++j)
-    {
-      const auto& p = a[i].points[j];
-      const auto& q = b[i].points[j];
-      d.largest = std::max(d.largest, std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]) / diagonal);
-    }
-  }
-  return d;
 }
 
 std::vector<int> parse_list(const std::string& s)
@@ -577,73 +535,8 @@ int main(int argc, char** argv)
       random_series.x.push_back(median(exact_ready)); // the curve's exact endpoint
       random_series.y.push_back(exact_error);
     }
-    // The editor's preview (issue 36): the fur of the reduced field of the 30 constraints, traced
-    // through the faces it reaches only, against the whole reduced field and the same fur; with
-    // eigenfunction rows in the basis' precision (double) and in float32.
-    if(dt > 0)
-    {
-      TVF::Reduced_spline_solver reduced(basis, dt);
-      reduced.add(constraints);
-      start = Clock::now();
-      const TVF::Streamline_surface surface(ops.shared_mesh());
-      const double surface_seconds = seconds_since(start);
-      const TVF::Fur_options fur = editor_fur();
-      std::vector<double> whole_field, whole_lines;
-      std::vector<TVF::Streamline> whole;
-      for(int i = 0; i < 5; ++i)
-      {
-        // As the editor's field message does it: the whole reduced field, then the fur on it.
-        start = Clock::now();
-        const Eigen::VectorXd x = reduced.field();
-        whole_field.push_back(seconds_since(start));
-        start = Clock::now();
-        whole = TVF::Streamline_tracer(ops.shared_mesh(), x).fur(fur);
-        whole_lines.push_back(seconds_since(start));
-      }
-      for(const TVF::Eigenfunction_precision precision :
-          {TVF::Eigenfunction_precision::float32, TVF::Eigenfunction_precision::float64})
-      {
-        const bool single = precision == TVF::Eigenfunction_precision::float32;
-        // Double rows only where they fit beside the basis (the armadillo's would be 5.5 GB).
-        if(!single && 16.0 * faces * dt > 2e9)
-        {
-          std::printf("\n(no double eigenfield rows for %s: %.1f GB)\n", s.key.c_str(), 16.0 * faces * dt / 1e9);
-          continue;
-        }
-        start = Clock::now();
-        auto rows = std::make_shared<const TVF::Eigenfield_rows>(basis, dt, precision);
-        const double rows_seconds = seconds_since(start);
-        std::vector<double> preview_lines;
-        std::vector<TVF::Streamline> preview;
-        std::size_t faces_read = 0;
-        // As the editor does: one source per basis size, given each edit's coefficients.
-        const auto source = std::make_shared<TVF::Reduced_face_vectors>(rows);
-        for(int i = 0; i < 5; ++i)
-        {
-          start = Clock::now();
-          source->set_coefficients(reduced.coefficients());
-          preview = TVF::Streamline_tracer(surface, source).fur(fur);
-          preview_lines.push_back(seconds_since(start));
-          faces_read = source->faces_asked();
-        }
-        const Stroke_difference difference = compare_strokes(preview, whole, bounding_box_diagonal(ops.mesh()));
-        std::printf("\npreview strokes (d = %d; 4000 fur strokes of 0.02 diagonal scaled by the magnitude at the roots;"
-                    " medians of 5): eigenfield rows by face in %s, %.2f GB, made in %.2f s (once per d), streamline surface"
-                    " %.1f ms (once)\n",
-                    dt, single ? "float32" : "double", rows->bytes() / 1e9, rows_seconds, 1e3 * surface_seconds);
-        const bool same = difference.same_count && difference.differing == 0 && difference.largest < 1e-6;
-        char line[512];
-        std::snprintf(line, sizeof line,
-                      "%-9s %7d %4s | %9.1f %9.1f %9.1f | %9.2f %7zu %5.1f%% | %7zu %7zu %9.1e %7d%s\n",
-                      s.key.c_str(), faces, single ? "f32" : "f64", 1e3 * median_of(whole_field),
-                      1e3 * median_of(whole_lines), 1e3 * (median_of(whole_field) + median_of(whole_lines)),
-                      1e3 * median_of(preview_lines), faces_read, 100.0 * faces_read / faces, preview.size(),
-                      whole.size(), difference.largest, difference.differing, same ? "  same strokes" : "  DIFFERENT");
-        std::printf("%s", line);
-        preview_rows.push_back(line);
-        rows.reset(); // before the next copy
-      }
-    }
+    // The editor's preview (issue 36).
+    if(dt > 0) tvf_bench::measure_preview(s.key, ops, basis, dt, constraints, preview_rows);
 
     if(preview_only)
       continue;
@@ -670,18 +563,7 @@ int main(int argc, char** argv)
     std::printf("speed-up = full TVFS constraint add (1 pull-back with the factor kept) / reduced constraint add;\n"
                 "full/red = full TVFS from scratch (factor + 54 pull-backs) / reduced set-up.\n\n");
   }
-  if(!preview_rows.empty())
-  {
-    std::printf("\nThe editor's preview (issue 36), d = 1000: whole = the reduced field U a of every face, then fur on it\n"
-                "(as the field message); preview = the same fur through the faces it reaches, U_f a per face from\n"
-                "the face's block of eigenfield rows (Eigenfield_rows, f32: float32 entries, the editor's; f64: double).\n"
-                "Same roots and lengths: the same strokes up to the rounding of the face vectors (distance: largest\n"
-                "between corresponding points / diagonal; differ: strokes whose walks differ).  Milliseconds.\n"
-                "%-9s %7s %4s | %9s %9s %9s | %9s %7s %6s | %7s %7s %9s %7s\n",
-                "mesh", "faces", "rows", "whole U a", "fur", "total", "preview", "faces", "", "strokes",
-                "(whole)", "distance", "differ");
-    for(const std::string& line : preview_rows) std::printf("%s", line.c_str());
-  }
+  tvf_bench::print_preview_table(preview_rows);
   if(!chart_file.empty() && !chart.series.empty())
   {
     MR::write_svg_line_chart(chart_file, chart);

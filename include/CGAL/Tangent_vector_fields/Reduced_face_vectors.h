@@ -15,6 +15,7 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <atomic>
 #include <cstddef>
 #include <memory>
 
@@ -94,13 +95,13 @@ public:
   void will_need(int f) const override { rows_->prefetch(f); }
 
   /// Faces asked for since `set_coefficients` (each call counts).
-  std::size_t faces_asked() const { return faces_asked_; }
+  std::size_t faces_asked() const { return faces_asked_.load(std::memory_order_relaxed); }
 
 private:
   std::shared_ptr<const Eigenfield_rows> rows_;
   Eigen::VectorXd a_;
   Eigen::VectorXf a32_;
-  mutable std::size_t faces_asked_ = 0;
+  mutable std::atomic<std::size_t> faces_asked_{0}; // counted from every tracing thread
 };
 
 } // namespace Tangent_vector_fields

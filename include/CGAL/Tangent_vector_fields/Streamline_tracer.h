@@ -157,6 +157,12 @@ struct Fur_options
   /// roots' largest magnitude too).
   Magnitude_reference magnitude_reference = Magnitude_reference::all_faces;
   unsigned random_seed = 1;
+  /// Threads tracing the strokes (0: one per core).  The same strokes, in the same order, for
+  /// any number; a thread is used per 256 roots at most.  Each thread reads the faces its
+  /// strokes reach, so a face near the strokes of two threads is read twice.  Measured on the
+  /// 346k-face armadillo (4,000 strokes of a reduced field on demand, `bench_design
+  /// --preview-only`): see `doc/tangent_vector_fields/bench_design_preview.txt`.
+  int threads = 0;
   /// Zero-field tolerance and segment limit of each stroke (lengths and directions are set here).
   Streamline_options tracing;
 };
@@ -165,7 +171,8 @@ struct Fur_options
 /// streamlines reach (fur of a field reconstructed from a reduced basis, say, where making
 /// the whole field costs far more than the strokes).
 ///
-/// A tracer reads each face at most once, from one thread.
+/// A tracer reads each face at most once per thread; fur on several threads
+/// (`Fur_options::threads`) calls `face_vector` and `will_need` from all of them at once.
 class Face_vector_source
 {
 public:

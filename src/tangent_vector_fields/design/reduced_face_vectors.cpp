@@ -144,7 +144,7 @@ void Reduced_face_vectors::set_coefficients(const Eigen::VectorXd& a)
 
 std::array<double, 2> Reduced_face_vectors::face_vector(int f) const
 {
-  ++faces_asked_;
+  faces_asked_.fetch_add(1, std::memory_order_relaxed);
   return rows_->precision() == Eigenfunction_precision::float32 ? rows_->face_vector(f, a32_) : rows_->face_vector(f, a_);
 }
 

@@ -54,7 +54,6 @@ std::vector<Streamline> evenly_spaced_streamlines(const Streamline_walker& walke
 
   Sample_grid grid(separation, walker.surface->box_min);
   std::mt19937_64 gen(o.random_seed);
-  const std::vector<double>& cumulative = walker.cumulative_areas();
   const long random_candidates = static_cast<long>(std::ceil(4 * expected_lines)) + 16;
 
   std::vector<Streamline> result;
@@ -129,7 +128,7 @@ std::vector<Streamline> evenly_spaced_streamlines(const Streamline_walker& walke
   // face are one of each.
   for(long c = 0; c < random_candidates && !full(); ++c)
   {
-    const Position p = walker.random_position(gen, cumulative);
+    const Position p = walker.random_position(gen);
     for(int j = 0; j < number_of_families(walker.n) && !full(); ++j)
     {
       Position q = p;

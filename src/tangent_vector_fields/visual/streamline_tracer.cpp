@@ -10,6 +10,11 @@
 #include <CGAL/Tangent_vector_fields/Streamline_tracer.h>
 #include <CGAL/Tangent_vector_fields/errors.h>
 
+#include <CGAL/Model_reduction/internal/Thread_pool.h>
+
+#include <algorithm>
+#include <functional>
+#include <iterator>
 #include <string>
 #include <utility>
 
@@ -50,6 +55,10 @@ double Streamline::length() const
 
 namespace {
 
+// Fur on several threads only past this many roots per thread: starting a thread costs about
+// as much as tracing a few strokes, and each thread reads its roots' faces anew.
+const long roots_per_thread = 256;
+
 std::vector<Streamline> fur_strokes(const internal::Streamline_walker& walker, const Fur_options& o)
 {
   const double length = walker.to_absolute(o.length, o.length_unit);
@@ -57,6 +66,7 @@ std::vector<Streamline> fur_strokes(const internal::Streamline_walker& walker, c
   if(o.branch < -1 || o.branch >= walker.n)
     throw Invalid_input("fur: branch " + std::to_string(o.branch) + " asked of a field of " +
                         std::to_string(walker.n) + " vector(s) per face (-1: all)");
+  if(o.threads < 0) throw Invalid_input("fur: threads must be 0 (one per core) or more, not " + std::to_string(o.threads));
   internal::check_streamline_options(o.tracing);
   // Every stroke is kept in memory: a count beyond this is a mistake (a density in the wrong
   // unit), and llround of an infinite or huge product is undefined.
@@ -78,48 +88,85 @@ std::vector<Streamline> fur_strokes(const internal::Streamline_walker& walker, c
   if(walker.on_demand && o.scale_length_by_magnitude && !roots_reference)
     throw Invalid_input("fur: a field given face by face knows its largest magnitude only over the faces it read: "
                         "scale the strokes by the largest magnitude at the roots (Magnitude_reference::roots)");
+
+  // The strokes are independent: thread t traces roots [start[t], start[t + 1]) with its own
+  // walker (whose face data needs no lock), from the generator moved on past the roots before
+  // them, so that any number of threads gives the same strokes.  A field on demand spends most
+  // of the time waiting for memory (the rows of each face), which two threads wait for at once.
+  const int threads = static_cast<int>(
+    std::min<long>(Model_reduction::internal::thread_count(o.threads), std::max(1L, count / roots_per_thread)));
+  std::vector<long> start(threads + 1);
+  for(int t = 0; t <= threads; ++t) start[t] = count * t / threads;
+  std::vector<internal::Streamline_walker> others;
+  for(int t = 1; t < threads; ++t) others.push_back(walker.for_another_thread());
+  Model_reduction::internal::Thread_pool pool(threads);
+  auto run = [&](const std::function<void(int, const internal::Streamline_walker&, std::mt19937_64&)>& body) {
+    auto one = [&](int t) {
+      std::mt19937_64 gen(o.random_seed);
+      internal::skip_random_positions(gen, start[t]);
+      body(t, t == 0 ? walker : others[t - 1], gen);
+    };
+    if(threads == 1) return one(0);
+    // The pool cuts [0, count) as `start` does: range [b, e) is thread t's.
+    pool.run(static_cast<std::size_t>(count), [&](std::size_t b, std::size_t) {
+      one(static_cast<int>(std::lower_bound(start.begin(), start.end(), static_cast<long>(b)) - start.begin()));
+    });
+  };
+
   // The roots depend only on the mesh and the random seed.  The magnitude the lengths and the
   // zero-field test are relative to: the largest over all faces, or over the roots' faces (a
   // field on demand reads only those before tracing): the generator then runs twice rather than
   // keeping up to 1e7 roots.
-  const std::vector<double>& cumulative = walker.cumulative_areas();
   double reference = walker.maximum_magnitude;
   if(roots_reference || walker.on_demand)
   {
-    reference = 0;
-    // A field on demand is told the faces of the roots a few ahead (`ahead`: the same roots).
-    const long lead = walker.on_demand ? 8 : 0;
-    std::mt19937_64 gen(o.random_seed), ahead(o.random_seed);
-    for(long i = 0; i < std::min(lead, count); ++i) walker.hint(walker.random_position(ahead, cumulative).face);
-    for(long i = 0; i < count; ++i)
-    {
-      if(i + lead < count && lead > 0) walker.hint(walker.random_position(ahead, cumulative).face);
-      reference = std::max(reference, walker.face(walker.random_position(gen, cumulative).face).magnitude);
-    }
+    std::vector<double> largest(threads, 0);
+    run([&](int t, const internal::Streamline_walker& w, std::mt19937_64& gen) {
+      // A field on demand is told the faces of the roots a few ahead (`ahead`: the same roots).
+      const long lead = w.on_demand ? 8 : 0, end = start[t + 1];
+      std::mt19937_64 ahead = gen;
+      for(long i = start[t]; i < std::min(start[t] + lead, end); ++i) w.hint(w.random_position(ahead).face);
+      for(long i = start[t]; i < end; ++i)
+      {
+        if(i + lead < end && lead > 0) w.hint(w.random_position(ahead).face);
+        largest[t] = std::max(largest[t], w.face(w.random_position(gen).face).magnitude);
+      }
+    });
+    reference = *std::max_element(largest.begin(), largest.end());
   }
-  std::mt19937_64 gen(o.random_seed);
-  std::vector<Streamline> strokes;
-  strokes.reserve(static_cast<std::size_t>(count * (last - first + 1)));
-  for(long i = 0; i < count; ++i)
+  std::vector<std::vector<Streamline>> parts(threads);
+  run([&](int t, const internal::Streamline_walker& w, std::mt19937_64& gen) {
+    std::vector<Streamline>& strokes = parts[t];
+    strokes.reserve(static_cast<std::size_t>((start[t + 1] - start[t]) * (last - first + 1)));
+    for(long i = start[t]; i < start[t + 1]; ++i)
+    {
+      Position root = w.random_position(gen);
+      Streamline_options s = o.tracing;
+      s.forward = true;
+      s.backward = false;
+      s.length_unit = Length_unit::absolute;
+      s.maximum_length = length;
+      if(o.scale_length_by_magnitude)
+        s.maximum_length = length * w.face(root.face).magnitude / std::max(reference, 1e-300);
+      s.loop_closure_tolerance = 0;
+      if(!(s.maximum_length > 0)) continue;
+      for(int j = first; j <= last; ++j)
+      {
+        root.branch = j;
+        No_proximity* none = nullptr;
+        Streamline stroke = w.trace(root, s, 0, none, none, false, nullptr, reference);
+        if(stroke.points.size() >= 2) strokes.push_back(std::move(stroke));
+      }
+    }
+  });
+  for(const internal::Streamline_walker& w : others)
   {
-    Position root = walker.random_position(gen, cumulative);
-    Streamline_options t = o.tracing;
-    t.forward = true;
-    t.backward = false;
-    t.length_unit = Length_unit::absolute;
-    t.maximum_length = length;
-    if(o.scale_length_by_magnitude)
-      t.maximum_length = length * walker.face(root.face).magnitude / std::max(reference, 1e-300);
-    t.loop_closure_tolerance = 0;
-    if(!(t.maximum_length > 0)) continue;
-    for(int j = first; j <= last; ++j)
-    {
-      root.branch = j;
-      No_proximity* none = nullptr;
-      Streamline s = walker.trace(root, t, 0, none, none, false, nullptr, reference);
-      if(s.points.size() >= 2) strokes.push_back(std::move(s));
-    }
+    walker.maximum_magnitude = std::max(walker.maximum_magnitude, w.maximum_magnitude);
+    walker.faces_read_elsewhere += w.faces_read();
   }
+  std::vector<Streamline> strokes = std::move(parts[0]);
+  for(int t = 1; t < threads; ++t)
+    strokes.insert(strokes.end(), std::make_move_iterator(parts[t].begin()), std::make_move_iterator(parts[t].end()));
   return strokes;
 }
 

@@ -194,7 +194,7 @@ public:
     if(on_demand && slot_[f] < 0) source->will_need(f);
   }
   /// Faces whose data was made (each read once from the source).
-  std::size_t faces_read() const { return pool_.size(); }
+  std::size_t faces_read() const { return pool_.size() + faces_read_elsewhere; }
 
   double to_absolute(double value, Length_unit unit) const;
 
@@ -317,10 +317,17 @@ public:
                    std::vector<Segment_record>* segments, double zero_reference = -1) const;
 
   // A random point of the surface, uniform by area.
-  Position random_position(std::mt19937_64& gen, const std::vector<double>& cumulative_area) const;
-  const std::vector<double>& cumulative_areas() const { return surface->cumulative_area; }
+  Position random_position(std::mt19937_64& gen) const;
+
+  // A walker of the same field with no face data made yet, for another thread: the face data
+  // is filled in without locks, so two threads cannot share one walker.
+  Streamline_walker for_another_thread() const;
+  // Faces read by the walkers of other threads (`faces_read` counts them too).
+  mutable std::size_t faces_read_elsewhere = 0;
 
 private:
+  Streamline_walker() = default; // for `for_another_thread`
+
   // A walk that ended where the field converges (a sink or a stall) in a face with a
   // singular corner went into that singularity: it is ended there, by a last segment in
   // the face, unless that would pass the length limit.  `last_branch` is the branch of
@@ -332,6 +339,9 @@ private:
   mutable std::vector<int> slot_;         // position of each face's data in pool_ (-1: not made)
   mutable std::deque<Face_data> pool_;    // stable references while it grows
 };
+
+/// Moves `gen` on past `count` calls of `random_position`.
+void skip_random_positions(std::mt19937_64& gen, long count);
 
 /// Evenly spaced streamlines (evenly_spaced_streamlines.cpp).
 std::vector<Streamline> evenly_spaced_streamlines(const Streamline_walker& walker, const Evenly_spaced_options& o);
