@@ -206,8 +206,7 @@ void polyline_comparison(const std::vector<Comparison_curve>& curves, const std:
       {"penalty", [](const Eigen::MatrixXd& P, bool c, double t, double) { return fit_polyline(P, c, t, SA::Fit_algorithm::penalty_decomposition); },
        0.25, 2.0, false},
       {"exact", [](const Eigen::MatrixXd& P, bool c, double t, double) {
-         if(c) throw SA::Invalid_input("the DP takes open curves only");
-         return fit_polyline(P, c, t, SA::Fit_algorithm::dynamic_programming);
+         return fit_polyline(P, c, t, SA::Fit_algorithm::dynamic_programming); // open and closed DPs
        }, 0.02, 1.0, false},
       {"dp", [](const Eigen::MatrixXd& P, bool c, double t, double) {
          const std::vector<Eigen::Index> kept = douglas_peucker(P, t, c);
