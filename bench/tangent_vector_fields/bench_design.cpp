@@ -518,6 +518,8 @@ int main(int argc, char** argv)
         }
         refining.remove(id);
       }
+      // The editor's answer to an add when its fur is previewed (issue 36).
+      tvf_bench::measure_preview(s.key, ops, basis, dt, constraints, refining, preview_rows);
       refining.stop_background();
       auto median = [](std::vector<double> v) {
         std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
@@ -535,9 +537,6 @@ int main(int argc, char** argv)
       random_series.x.push_back(median(exact_ready)); // the curve's exact endpoint
       random_series.y.push_back(exact_error);
     }
-    // The editor's preview (issue 36).
-    if(dt > 0) tvf_bench::measure_preview(s.key, ops, basis, dt, constraints, preview_rows);
-
     if(preview_only)
       continue;
     const double double_bytes = static_cast<double>(basis->memory_bytes());

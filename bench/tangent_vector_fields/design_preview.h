@@ -10,6 +10,7 @@
 #include <CGAL/Tangent_vector_fields/Eigenfield_basis.h>
 #include <CGAL/Tangent_vector_fields/Field_constraint.h>
 #include <CGAL/Tangent_vector_fields/Operator_matrices.h>
+#include <CGAL/Tangent_vector_fields/Refining_spline_solver.h>
 
 #include <memory>
 #include <string>
@@ -18,11 +19,14 @@
 namespace tvf_bench {
 
 /// Measures the preview of the reduced field of `constraints` in a basis of size `d` and appends
-/// its table rows to `rows` (also printed with their details as measured).
+/// its table rows to `rows` (also printed with their details as measured).  Then the editor's
+/// answer to an add with exact answers on: `refining` (holding `constraints`, refining in the
+/// background) gets a constraint, the preview's strokes are traced, and the exact field follows
+/// as `tvf serve` waits for it after a preview.
 void measure_preview(const std::string& mesh_key, const CGAL::Tangent_vector_fields::Operator_matrices& ops,
                      std::shared_ptr<const CGAL::Tangent_vector_fields::Eigenfield_basis> basis, int d,
                      const std::vector<CGAL::Tangent_vector_fields::Field_constraint>& constraints,
-                     std::vector<std::string>& rows);
+                     CGAL::Tangent_vector_fields::Refining_spline_solver& refining, std::vector<std::string>& rows);
 
 /// The table of every mesh's rows, with its legend (nothing if `rows` is empty).
 void print_preview_table(const std::vector<std::string>& rows);

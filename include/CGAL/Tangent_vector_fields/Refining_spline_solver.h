@@ -140,7 +140,13 @@ public:
   /// and the last reduced field measured (on the bunny, 69k faces, d = 1000: a pull-back
   /// takes 35 ms, the reduced field 70 ms).  The wait is at most 1.5 times the expected
   /// time; then the reduced field is made after all.  For a first answer to an edit.
-  Eigen::VectorXd soonest_field(Spline_answer* which = nullptr);
+  ///
+  /// `worth_waiting_seconds`: a caller that has shown the edit otherwise in the meantime (the
+  /// editor's preview strokes) waits for the exact field whenever the worker is expected to
+  /// have it within this time, and for up to this time, instead of making the reduced field
+  /// (on the 346k-face armadillo at d = 1000 the reduced field is 115 ms of memory traffic that
+  /// slows the worker's solves beside it).
+  Eigen::VectorXd soonest_field(Spline_answer* which = nullptr, double worth_waiting_seconds = 0);
   /// `field` while only the values of constraint `id` change (a drag): from the answering
   /// solver's cached response to them (`Basic_spline_solver::field_after_value_edit`).
   Eigen::VectorXd field_after_value_edit(Constraint_id id, Spline_answer* which = nullptr);

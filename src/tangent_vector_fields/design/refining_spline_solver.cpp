@@ -8,9 +8,31 @@
 #include <CGAL/Tangent_vector_fields/errors.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cmath>
+#if defined(__linux__)
+#include <sys/resource.h>
+#endif
 
 namespace CGAL {
 namespace Tangent_vector_fields {
+
+namespace {
+
+// The worker yields the cores to the caller's threads: what the user waits for first (the
+// editor's preview strokes, a reduced field) is made beside the pull-backs on the same cores
+// (346k faces: the preview's strokes took 85 ms beside the worker against 30 ms alone).  Linux
+// keeps the nice value per thread, and threads the worker starts inherit it.
+void lower_this_threads_priority()
+{
+#if defined(__linux__)
+  errno = 0;
+  const int nice = getpriority(PRIO_PROCESS, 0);
+  if(errno == 0) setpriority(PRIO_PROCESS, 0, std::min(nice + 10, 19)); // no harm if refused
+#endif
+}
+
+} // namespace
 
 template <class Reduced, class Full>
 Basic_refining_spline_solver<Reduced, Full>::Basic_refining_spline_solver(std::unique_ptr<Reduced> reduced,
@@ -270,6 +292,7 @@ void Basic_refining_spline_solver<Reduced, Full>::refine_in_background(Refinemen
 template <class Reduced, class Full>
 void Basic_refining_spline_solver<Reduced, Full>::worker_loop(Full* full, double omega, Refinement_progress progress)
 {
+  lower_this_threads_priority();
   if(!full)
   {
     // Made here: its factorisation is the first part of the wait for an exact answer.
@@ -408,13 +431,18 @@ Eigen::VectorXd Basic_refining_spline_solver<Reduced, Full>::field(Spline_answer
 }
 
 template <class Reduced, class Full>
-Eigen::VectorXd Basic_refining_spline_solver<Reduced, Full>::soonest_field(Spline_answer* which)
+Eigen::VectorXd Basic_refining_spline_solver<Reduced, Full>::soonest_field(Spline_answer* which,
+                                                                           double worth_waiting_seconds)
 {
+  if(!(worth_waiting_seconds >= 0) || !std::isfinite(worth_waiting_seconds))
+    throw Invalid_input("soonest_field: the time worth waiting must be finite and non-negative");
   const Spline_answer a = answer();
-  if(!a.exact && a.pending > 0 && worker_.joinable() && pull_back_seconds_ > 0 && reduced_field_seconds_ > 0)
+  if(!a.exact && a.pending > 0 && worker_.joinable() && pull_back_seconds_ > 0)
   {
     const double expected = a.pending * pull_back_seconds_;
-    if(expected < reduced_field_seconds_)
+    if(expected < worth_waiting_seconds)
+      wait_until_exact(std::chrono::milliseconds(static_cast<long>(std::ceil(1e3 * worth_waiting_seconds))));
+    else if(reduced_field_seconds_ > 0 && expected < reduced_field_seconds_)
       wait_until_exact(std::chrono::milliseconds(2 + static_cast<long>(1.5e3 * expected)));
   }
   return field(which);

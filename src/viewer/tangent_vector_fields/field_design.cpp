@@ -189,7 +189,11 @@ public:
     const TVF::Constraint_id edited = edited_ >= 0 ? entries_.at(edited_).spline : -1;
     // After an add or a move: the exact field at once where the worker has it sooner than the
     // reduced one would take.
-    out.x = edited >= 0 ? spline_->field_after_value_edit(edited, &answer) : spline_->soonest_field(&answer);
+    // With the preview's strokes on screen the reduced field is no longer the first thing the
+    // user sees: an exact field expected within this time is worth waiting for instead.
+    const double worth_waiting = preview_shown_ ? 0.5 : 0;
+    preview_shown_ = false;
+    out.x = edited >= 0 ? spline_->field_after_value_edit(edited, &answer) : spline_->soonest_field(&answer, worth_waiting);
     (answer.exact ? out.full_ms : out.reconstruct_ms) = milliseconds_since(start);
     if(answer.exact != exact_before) out.report = spline_->report();
     out.exact = answer.exact;
@@ -272,6 +276,7 @@ public:
       out.strokes = tracer.fur(fur_options(display));
       out.faces_read = preview_source_->faces_asked();
       out.lines_ms = milliseconds_since(start);
+      preview_shown_ = true;
       return true;
     }
   }
@@ -305,6 +310,7 @@ private:
   Eigen::VectorXd reduced_; // the last reduced answer, of `reduced_state_`
   std::shared_ptr<TVF::Reduced_face_vectors> preview_source_; // vector fields: the reduced field face by face
   int preview_size_ = 0;
+  bool preview_shown_ = false; // a preview answered the edit the next field answers
 };
 
 } // namespace

@@ -6,6 +6,7 @@
 // full solvers of the same constraint set after every kind of edit.
 
 #include "design_test_support.h"
+#include "expect_reason.h"
 
 #include <CGAL/Tangent_vector_fields/Full_spline_solver.h>
 #include <CGAL/Tangent_vector_fields/Reduced_spline_solver.h>
@@ -17,6 +18,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <map>
 
 namespace TVF = CGAL::Tangent_vector_fields;
@@ -290,6 +292,43 @@ TEST(RefiningSpline, SoonestFieldIsTheAnswerItSays)
   for(int i = 3; i < 9; ++i) add_and_check(i, true);
   ASSERT_TRUE(spline->wait_until_exact(std::chrono::minutes(2)));
   EXPECT_LT(relative_mx_error(*s.ops, spline->soonest_field(), fresh_solves(s, d, set).full), 1e-9);
+}
+
+// A caller that has shown the edit otherwise (the editor's preview strokes) names how long an
+// exact field is worth waiting for: with the worker expected within that time, the answer is the
+// exact field.  Batches of 20 constraints keep the worker busy far longer than the reduced field
+// takes to make, where the default answers at once with the reduced field.
+TEST(RefiningSpline, SoonestFieldWaitsAsLongAsTheCallerSays)
+{
+  const Mesh mesh = make_torus(32, 20);
+  Design_setup s = setup(mesh, 150);
+  const TVF::Intrinsic_mesh& m = s.ops->mesh();
+  const int d = 150, nf = m.number_of_faces();
+  auto spline = refining(s, d);
+  std::map<TVF::Constraint_id, TVF::Field_constraint> set;
+  spline->refine_in_background();
+  for(int batch = 0; batch < 3; ++batch)
+  {
+    std::vector<TVF::Field_constraint> cs;
+    for(int i = 0; i < (batch == 0 ? 1 : 20); ++i)
+    {
+      const int f = ((20 * batch + i) * 389 + 11) % nf;
+      cs.push_back(TVF::Field_constraint::vector_in_face(f, tangent(m, f, 0.3 * i, 1)));
+    }
+    const std::vector<TVF::Constraint_id> ids = spline->add(cs);
+    for(std::size_t i = 0; i < ids.size(); ++i) set[ids[i]] = cs[i];
+    if(batch == 0) // the first pull-back tells how long one takes
+    {
+      ASSERT_TRUE(spline->wait_until_exact(std::chrono::minutes(2)));
+      continue;
+    }
+    TVF::Spline_answer a;
+    const Eigen::VectorXd x = spline->soonest_field(&a, 60.0);
+    EXPECT_TRUE(a.exact) << "batch " << batch;
+    EXPECT_LT(relative_mx_error(*s.ops, x, fresh_solves(s, d, set).full), 1e-9) << "batch " << batch;
+  }
+  EXPECT_THROW_REASON(spline->soonest_field(nullptr, -1.0), TVF::Invalid_input, "time worth waiting");
+  EXPECT_THROW_REASON(spline->soonest_field(nullptr, std::nan("")), TVF::Invalid_input, "time worth waiting");
 }
 
 // The generic class answers exactly too: on a basis it answers at once with the reduced spline
