@@ -11,6 +11,8 @@
 
 #include <CGAL/Spline_approximation/internal/spline_numerics.h>
 
+#include "periodic_index.h"
+
 #include <Eigen/Core>
 
 #include <algorithm>
@@ -25,10 +27,10 @@ namespace Spline_approximation {
 namespace internal {
 namespace closed_dp {
 
-// Indices "unwrapped" around the circle: candidate u is candidate u mod m one period (1) on per
-// m, sample r likewise per n.
-typedef long long Index;
-inline Index floor_div(Index a, Index b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
+// Indices "unwrapped" around the circle (periodic_index.h): candidate u is candidate u mod m one
+// period (1) on per m, sample r likewise per n.
+using internal::Index;
+using internal::floor_div;
 
 // Sums over a segment's samples as its far end moves away from its start vertex (to later
 // candidates, or to earlier ones for a backward segment): d a sample's distance in t from the

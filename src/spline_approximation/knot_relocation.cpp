@@ -20,6 +20,7 @@
 
 #include <CGAL/Spline_approximation/internal/spline_numerics.h>
 
+#include "periodic_index.h"
 #include "sample_moments.h"
 
 #include <Eigen/Cholesky>
@@ -133,10 +134,7 @@ struct Window
 // Knots as unwrapped candidate indices ("virtual"): increasing; on a closed curve they may leave
 // [0, m) by a period (index C stands for candidate C mod m, one period, m, further on), so a
 // knot can slide across the seam.  Samples alike: index J is sample J mod n, one period on.
-typedef long long Index;
-typedef std::vector<Index> Knots;
-
-Index floor_div(Index a, Index b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
+typedef std::vector<Index> Knots; // periodic_index.h
 
 class Degree_one_search
 {
