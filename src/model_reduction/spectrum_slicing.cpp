@@ -285,16 +285,19 @@ int split_point(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analys
   Shifted_factor shifted(p, analysis);
   split = target / density;
   int below = 0;
-  for(int attempt = 0; attempt < 6; ++attempt)
+  for(int attempt = 0, nudges = 0;; ++attempt)
   {
     below = shifted.factor_at(split) - c;
-    if(shifted.solver.smallest_relative_pivot() < 1e-14)
+    if(shifted.solver.smallest_relative_pivot() < 1e-14 && nudges++ < 3) // on an eigenvalue: move a little
     {
       split *= 1 + 1e-6;
       continue;
     }
     if(below > 0) density = below / split;
-    if(below > 0 && std::abs(below - target) <= slack) break;
+    // The count goes back with the shift it was made at: no move after the last attempt (a
+    // move there returned another shift's count where Weyl's guess was far off -- a graph
+    // Laplacian's -- and a chain ended at a shift with 50 more eigenvalues below it than said).
+    if((below > 0 && std::abs(below - target) <= slack) || attempt >= 5) break;
     split = below > 0 ? target / density : 2 * split;
   }
   return below;

@@ -95,9 +95,9 @@ void run_chain(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysi
                const Eigensolver_options& options, Chain_monitor& monitor, int index);
 
 /// A shift with `target` eigenvalues (kernel excluded), give or take `slack`, below it,
-/// counted exactly by the inertia; returns the count at the shift it stopped at (after at most
-/// six factorisations).  Starts from `density` (eigenvalues per unit of lambda) and updates it
-/// from the counts found.
+/// counted exactly by the inertia; returns the count at the shift it stopped at, `split` (after
+/// at most six factorisations, and three more if shifts fall on eigenvalues).  Starts from
+/// `density` (eigenvalues per unit of lambda) and updates it from the counts found.
 int split_point(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysis, int target, int slack,
                 double& density, double& split);
 
