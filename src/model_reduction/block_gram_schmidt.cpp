@@ -117,7 +117,10 @@ Eigen::MatrixXd project_out_of_columns(const Eigen::Ref<const Eigen::MatrixXd>& 
   return C;
 }
 
-// Complex blocks through the BLAS (zgemm).
+// Complex blocks through the BLAS (zgemm): four times the arithmetic per entry read, so that
+// packing costs less.  Measured (4 columns against 100 of 20k rows, one thread): 5.0 ms, where
+// the real kernel on the interleaved parts, four passes (Z and -i Z, projection and update),
+// took 9.5 ms.
 Eigen::MatrixXcd project_out_of_columns(const Eigen::Ref<const Eigen::MatrixXcd>& Q, Eigen::Index first,
                                         Eigen::Index count, Eigen::MatrixXcd& Z)
 {
