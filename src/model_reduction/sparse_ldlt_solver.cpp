@@ -126,11 +126,12 @@ void Basic_sparse_ldlt_solver<Scalar>::analyze(const Sparse_matrix& A, bool)
   impl_->analyzed = true;
 }
 
+// Eigen's SimplicialLDLT cannot be copied: the first `factor` analyses the pattern again (AMD
+// orders one pattern the same way each time).
 template <class Scalar>
-void Basic_sparse_ldlt_solver<Scalar>::copy_analysis(const Basic_sparse_ldlt_solver& other)
+void Basic_sparse_ldlt_solver<Scalar>::copy_analysis(const Basic_sparse_ldlt_solver&)
 {
-  impl_->ldlt = other.impl_->ldlt;
-  impl_->analyzed = other.impl_->analyzed;
+  impl_->analyzed = false;
 }
 
 template <class Scalar>
