@@ -123,7 +123,8 @@ struct Float32_of<std::complex<double>>
 template <class Scalar>
 struct Basic_eigenpairs
 {
-  typedef Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic> Matrix;
+  typedef Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic> Matrix; ///< of the vectors
+  /// Of the vectors rounded to float32 (`std::complex<float>` for complex ones).
   typedef Eigen::Matrix<typename internal::Float32_of<Scalar>::type, Eigen::Dynamic, Eigen::Dynamic> Float32_matrix;
 
   Eigen::VectorXd values;
@@ -166,7 +167,7 @@ Complex_eigenpairs lowest_eigenpairs(const Eigen::SparseMatrix<std::complex<doub
                                      int count, const Eigen::MatrixXcd& kernel, const Eigensolver_options& options = {});
 
 /// One eigenproblem of `lowest_eigenpairs_of_each`: `A x = lambda D x` outside `kernel`,
-/// its `count` lowest pairs.
+/// its `count` lowest pairs (complex ones are solved one at a time, by `lowest_eigenpairs`).
 template <class Scalar>
 struct Basic_eigenproblem_request
 {

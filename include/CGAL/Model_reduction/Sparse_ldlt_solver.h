@@ -62,7 +62,9 @@ private:
   std::unique_ptr<Impl> impl_;
 };
 
+/// `LDL^T` of real symmetric matrices.
 typedef Basic_sparse_ldlt_solver<double> Sparse_ldlt_solver;
+/// `L D L^H` of complex Hermitian matrices (`D` real: its signs are the inertia).
 typedef Basic_sparse_ldlt_solver<std::complex<double>> Hermitian_ldlt_solver;
 extern template class Basic_sparse_ldlt_solver<double>;
 extern template class Basic_sparse_ldlt_solver<std::complex<double>>;
