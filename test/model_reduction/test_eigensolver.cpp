@@ -490,6 +490,28 @@ TEST(Eigensolver, ATakenOverChainTopLeavesBothPartsComplete)
   EXPECT_GE(cuts, 1);
 }
 
+TEST(Eigensolver, SplitPointReturnsTheCountOfTheShiftItReturns)
+{
+  // `split_point` moves a shift until the inertia below it is near a target.  On the perfect
+  // icosphere the counts jump over the target of 10 (multiplets of 3, 5 and 7: 1 + 8, then
+  // 1 + 15, with the constant), so that the shift swings between the two sides for all its six
+  // attempts; the count it returns must be that of the shift it returns.  Truth: a dense solve.
+  namespace I = MR::internal;
+  const Sparse_eigenproblem q = cotan_vertex_problem(make_icosphere(3));
+  MR::Eigensolver_options dense;
+  dense.dense_size = 4000;
+  const MR::Eigenpairs reference = MR::lowest_eigenpairs(q.A, q.d, 60, q.kernel, dense);
+  const I::Standard_eigenproblem p(q.A, q.d, q.kernel);
+  MR::Sparse_ldlt_solver analysis;
+  analysis.analyze(p.A);
+  for(double guess : {0.1, 1., 10.}) // times Weyl's estimate of the density
+  {
+    double density = guess * q.d.sum() / (4 * M_PI), split = 0;
+    const int below = I::split_point(p, analysis, 10, 0, density, split);
+    EXPECT_EQ(below, static_cast<int>((reference.values.array() < split).count())) << "guess " << guess;
+  }
+}
+
 TEST(Eigensolver, VectorStoreHandsOutRunsOfColumnsAndReusesTheLastOneGivenBack)
 {
   // A window's Ritz vectors are computed straight into runs of adjacent store columns.

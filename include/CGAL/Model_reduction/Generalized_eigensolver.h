@@ -10,10 +10,16 @@
 /// spectrum, each with an `LDL^T` whose inertia counts its eigenvalues and a short
 /// block shift-and-invert Lanczos run that must find exactly that many; a known kernel
 /// deflated, every returned pair checked on its true residual.
+///
+/// `A` may also be complex Hermitian (`D` still real): an operator that commutes with a
+/// complex structure (the n-field energy, `z -> i z` per face) has every eigenvalue twice in
+/// its real form, which the complex form has once, with half the unknowns -- half the
+/// vectors to find and orthogonalise, a quarter of the matrix entries to factor.
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include <complex>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -98,13 +104,34 @@ struct Completeness_check
   bool passed() const { return expected == inertia; }
 };
 
-/// Eigenpairs in ascending order; `vectors` are `D`-orthonormal.
-struct Eigenpairs
+namespace internal {
+/// The scalar a vector of `Scalar`s is rounded to for `Eigensolver_options::float32_vectors`.
+template <class Scalar>
+struct Float32_of
 {
+  typedef float type;
+};
+template <>
+struct Float32_of<std::complex<double>>
+{
+  typedef std::complex<float> type;
+};
+} // namespace internal
+
+/// Eigenpairs in ascending order (the values real); `vectors` are `D`-orthonormal (in the
+/// Hermitian inner product `x^H D y` when `Scalar` is `std::complex<double>`).
+template <class Scalar>
+struct Basic_eigenpairs
+{
+  typedef Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic> Matrix; ///< of the vectors
+  /// Of the vectors rounded to float32 (`std::complex<float>` for complex ones).
+  typedef Eigen::Matrix<typename internal::Float32_of<Scalar>::type, Eigen::Dynamic, Eigen::Dynamic> Float32_matrix;
+
   Eigen::VectorXd values;
-  Eigen::MatrixXd vectors;
-  /// With `Eigensolver_options::float32_vectors`: the vectors, each entry rounded to float32.
-  Eigen::MatrixXf vectors_float32;
+  Matrix vectors;
+  /// With `Eigensolver_options::float32_vectors`: the vectors, each entry (each part of a
+  /// complex one) rounded to float32.
+  Float32_matrix vectors_float32;
   Eigen::VectorXd residuals;    ///< relative residual of each pair
   int basis_size = 0;           ///< Krylov vectors used
   int operator_applications = 0; ///< columns passed through the shift-invert solve
@@ -118,6 +145,11 @@ struct Eigenpairs
   Completeness_check completeness;
 };
 
+/// Eigenpairs of a real symmetric problem.
+typedef Basic_eigenpairs<double> Eigenpairs;
+/// Eigenpairs of a complex Hermitian problem: real values, complex vectors.
+typedef Basic_eigenpairs<std::complex<double>> Complex_eigenpairs;
+
 /// The `count` smallest eigenvalues of `A x = lambda D x` on the `D`-orthogonal
 /// complement of `kernel` (columns: a basis of the null space of `A`, may be empty).
 /// \throws Numerical_failure if a window does not converge to `tolerance` (after one
@@ -125,15 +157,27 @@ struct Eigenpairs
 Eigenpairs lowest_eigenpairs(const Eigen::SparseMatrix<double>& A, const Eigen::VectorXd& D, int count,
                              const Eigen::MatrixXd& kernel, const Eigensolver_options& options = {});
 
+/// The same for `A` complex Hermitian positive semi-definite (both triangles stored) and `D`
+/// real: for operators with a complex structure, whose real form has every eigenvalue twice
+/// (`(x, J x)`); each complex pair `(lambda, z)` stands for the real pairs of `z` and `i z`.
+/// The options keep their meaning, counted in complex vectors (`block_size` complex vectors a
+/// block: as the multiplicities are halved too, it finds what twice as many real ones would).
+/// The kernel's columns are complex (one per pair of the real form's kernel).
+Complex_eigenpairs lowest_eigenpairs(const Eigen::SparseMatrix<std::complex<double>>& A, const Eigen::VectorXd& D,
+                                     int count, const Eigen::MatrixXcd& kernel, const Eigensolver_options& options = {});
+
 /// One eigenproblem of `lowest_eigenpairs_of_each`: `A x = lambda D x` outside `kernel`,
-/// its `count` lowest pairs.
-struct Eigenproblem_request
+/// its `count` lowest pairs (complex ones are solved one at a time, by `lowest_eigenpairs`).
+template <class Scalar>
+struct Basic_eigenproblem_request
 {
-  const Eigen::SparseMatrix<double>& A;
+  const Eigen::SparseMatrix<Scalar>& A;
   const Eigen::VectorXd& D;
   int count;
-  const Eigen::MatrixXd& kernel;
+  const Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>& kernel;
 };
+/// A real symmetric problem of `lowest_eigenpairs_of_each`.
+typedef Basic_eigenproblem_request<double> Eigenproblem_request;
 
 /// `lowest_eigenpairs` of several problems at once: the windows of all of them are queued
 /// for one pool of threads (`options.threads`), so that a thread that finishes its part of
@@ -150,10 +194,16 @@ std::vector<Eigenpairs> lowest_eigenpairs_of_each(const std::vector<Eigenproblem
 /// `values[first_gap ..]` (default: the last gap).
 Completeness_check check_completeness(const Eigen::SparseMatrix<double>& A, const Eigen::VectorXd& D,
                                       const Eigen::VectorXd& values, int kernel_dimension, int first_gap = -1);
+/// The same for `A` complex Hermitian (each eigenvalue of the complex form counted once).
+Completeness_check check_completeness(const Eigen::SparseMatrix<std::complex<double>>& A, const Eigen::VectorXd& D,
+                                      const Eigen::VectorXd& values, int kernel_dimension, int first_gap = -1);
 
 /// Number of eigenvalues of `A x = lambda D x` below `tau` (Sylvester's law of inertia:
 /// the negative pivots of an `LDL^T` factorisation of `A - tau D`).
 int count_eigenvalues_below(const Eigen::SparseMatrix<double>& A, const Eigen::VectorXd& D, double tau);
+/// The same for `A` complex Hermitian (`LDL^H`, `D` real): each eigenvalue of the complex form
+/// counted once, half the count of its real form.
+int count_eigenvalues_below(const Eigen::SparseMatrix<std::complex<double>>& A, const Eigen::VectorXd& D, double tau);
 
 } // namespace Model_reduction
 } // namespace CGAL

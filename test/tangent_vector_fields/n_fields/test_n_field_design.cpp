@@ -1,10 +1,10 @@
 // Copyright (c) 2026 The Tangent_vector_fields authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
-// n-direction fields (SPEC 10), design: the spectrum of L_n on icospheres against the
-// continuous operator, the basis and its files, splines reduced and full (constraints met,
+// n-direction fields (SPEC 10), design: splines reduced and full (constraints met,
 // stationarity, convergence in d, rotation, invariance), prescribed singularities by one-ring
-// relations and by the modified connection, refusals, constraint files.
+// relations and by the modified connection, refusals, constraint files.  The basis itself:
+// test_n_field_basis.cpp.
 
 #include "n_field_test_support.h"
 #include "scratch_path.h"
@@ -28,141 +28,6 @@
 namespace TVF = CGAL::Tangent_vector_fields;
 using namespace tvf_test;
 using namespace nfield_test;
-
-TEST(NFieldBasis, SpectrumOfIcospheresApproachesTwiceTheConnectionLaplacian)
-{
-  // Measured (SPEC 10 left it open): on the unit sphere the multiplets of L_n approach
-  // 2 (l(l+1) - n^2), twice the connection (Bochner) Laplacian of spin-n sections, with
-  // multiplicity 2(2l+1), l >= n.  The factor 2: w_e = 3|e|^2/(A_f + A_g) is twice |e| over
-  // the centroids' distance across e.  Multiplet means at l = n, levels 2, 3, 4, 5, 6
-  // (n = 4): 8.104, 8.045, 8.030, 8.027, 8.026; the two-point weights are not consistent
-  // on the icosphere's uneven triangles, so the error levels off near 0.3% and multiplets
-  // with l > n stay split by ~2-4% (doc/tangent_vector_fields/manual.md).  Checked here: the multiplet structure,
-  // the identified limit (means within 0.6% at level 4), and the lowest multiplet's error
-  // shrinking (n = 4: 0.104, 0.045, 0.030 at levels 2, 3, 4).
-  for(int n : {1, 2, 4})
-  {
-    std::vector<double> lowest_error;
-    for(int level : {2, 3, 4})
-    {
-      const auto nops = n_field_operators(make_icosphere(level), n);
-      int count = 0;
-      for(int l = n; l < n + 3; ++l) count += 2 * (2 * l + 1);
-      const TVF::N_field_basis basis(nops, count + 2);
-      EXPECT_EQ(basis.kernel_dimension(), 0);
-      const double scale = 1; // the vertices lie on the unit sphere
-      const double tolerance = level < 4 ? 0.03 : 0.006; // measured worst: 2.7% (level 2), 0.45% (level 4)
-      int k = 0;
-      for(int l = n; l < n + 3; ++l)
-      {
-        const int multiplicity = 2 * (2 * l + 1);
-        const double expected = 2. * (l * (l + 1) - n * n);
-        double mean = 0;
-        for(int j = 0; j < multiplicity; ++j) mean += basis.eigenvalue(k + j) * scale / multiplicity;
-        EXPECT_NEAR(mean, expected, tolerance * expected) << "n = " << n << ", level " << level << ", l = " << l;
-        // A gap separates the multiplet from the next one.
-        EXPECT_LT(basis.eigenvalue(k + multiplicity - 1) * scale, 2. * ((l + 1) * (l + 2) - n * n) * 0.95);
-        if(l == n) lowest_error.push_back(std::abs(mean - expected));
-        k += multiplicity;
-      }
-    }
-    EXPECT_LT(lowest_error[1], lowest_error[0]) << "n = " << n;
-    EXPECT_LT(lowest_error[2], lowest_error[1]) << "n = " << n;
-  }
-}
-
-TEST(NFieldBasis, PairsOrthonormalResidualsAndDenseAgreement)
-{
-  // 1,536 unknowns: above the eigensolver's dense threshold, small enough for a dense check.
-  Mesh torus = make_torus(24, 16);
-  jitter_vertices(torus, 0.05, 11);
-  for(int n : {1, 3})
-  {
-    const auto nops = n_field_operators(torus, n);
-    const TVF::N_field_basis basis(nops, 40);
-    ASSERT_EQ(basis.size(), 40);
-    const Eigen::VectorXd& mass = nops->masses();
-    const Eigen::MatrixXd& X = basis.fields();
-    EXPECT_LT((X.transpose() * mass.asDiagonal() * X - Eigen::MatrixXd::Identity(40, 40)).cwiseAbs().maxCoeff(), 1e-10);
-    const Eigen::MatrixXd J = nops->operators().J();
-    for(int j = 0; j < 40; j += 2)
-    {
-      EXPECT_EQ((X.col(j + 1) - J * X.col(j)).cwiseAbs().maxCoeff(), 0.);
-      EXPECT_EQ(basis.eigenvalue(j), basis.eigenvalue(j + 1));
-    }
-    for(int j = 0; j < 40; ++j)
-    {
-      const Eigen::VectorXd r = nops->S() * X.col(j) - basis.eigenvalue(j) * mass.cwiseProduct(X.col(j));
-      EXPECT_LT(r.cwiseQuotient(mass.cwiseSqrt()).norm() / basis.eigenvalue(j), 1e-8) << "element " << j;
-    }
-    const Eigen::MatrixXd S = nops->S();
-    const Eigen::VectorXd d = mass.cwiseSqrt().cwiseInverse();
-    const Eigen::VectorXd lambda =
-        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(d.asDiagonal() * S * d.asDiagonal()).eigenvalues();
-    for(int j = 0; j < 40; ++j) EXPECT_NEAR(basis.eigenvalue(j), lambda[j], 1e-9 * lambda[j]);
-    EXPECT_EQ(basis.report().inertia, basis.report().expected);
-    // Energies through the basis equal those through the operators.
-    const Eigen::VectorXd a = Eigen::VectorXd::LinSpaced(40, 1, 2);
-    const Eigen::VectorXd z = basis.field(a);
-    EXPECT_NEAR(basis.energy(a, 1), nops->dirichlet_energy(z), 1e-9 * basis.energy(a, 1));
-    EXPECT_NEAR(basis.energy(a, 2), nops->m_harmonic_energy(z, 2), 1e-9 * basis.energy(a, 2));
-    EXPECT_NEAR(basis.energy(a, 3), nops->m_harmonic_energy(z, 3), 1e-9 * basis.energy(a, 3));
-  }
-}
-
-TEST(NFieldBasis, KernelFirstOnTheCubeAndFilesRoundTrip)
-{
-  const Mesh cube = make_cube(4);
-  const auto nops = n_field_operators(cube, 4);
-  const TVF::N_field_basis basis(nops, 11); // rounded up to 12
-  ASSERT_EQ(basis.size(), 12);
-  EXPECT_EQ(basis.kernel_dimension(), 2);
-  EXPECT_EQ(basis.eigenvalue(0), 0.);
-  EXPECT_GT(basis.eigenvalue(2), 0.);
-
-  const std::string path = scratch_path("cube4.tvfn");
-  basis.save(path);
-  const TVF::N_field_basis loaded = TVF::N_field_basis::load(nops, path);
-  EXPECT_EQ(loaded.kernel_dimension(), 2);
-  EXPECT_EQ((loaded.fields() - basis.fields()).cwiseAbs().maxCoeff(), 0.);
-  EXPECT_EQ((loaded.eigenvalues() - basis.eigenvalues()).cwiseAbs().maxCoeff(), 0.);
-
-  auto load_error = [&](std::shared_ptr<const TVF::N_field_operators> ops, const std::string& file) {
-    try
-    {
-      TVF::N_field_basis::load(ops, file);
-    }
-    catch(const TVF::Invalid_input& e)
-    {
-      return std::string(e.what());
-    }
-    return std::string("loaded");
-  };
-  EXPECT_NE(load_error(n_field_operators(cube, 2), path).find("holds 4-fields, not 2-fields"), std::string::npos);
-  EXPECT_NE(load_error(n_field_operators(cube, 4, TVF::N_field_boundary::zero), path).find("boundary condition"),
-            std::string::npos);
-  EXPECT_NE(load_error(n_field_operators(make_cube(3), 4), path).find("other connectivity"), std::string::npos);
-  {
-    // Another connection: a prescribed singularity changes S_n, so the basis does not fit.
-    TVF::Discrete_operators<Mesh> ops(cube);
-    TVF::N_field_options prescribed;
-    prescribed.singularities = {{5, 1}};
-    const auto with_singularity = std::make_shared<const TVF::N_field_operators>(ops.shared_matrices(), 4, prescribed);
-    EXPECT_NE(load_error(with_singularity, path).find("0 prescribed singularities, not these 1"), std::string::npos)
-        << load_error(with_singularity, path);
-  }
-  Mesh bigger = make_cube(4);
-  transform(bigger, 2.0);
-  EXPECT_NE(load_error(n_field_operators(bigger, 4), path).find("other edge lengths"), std::string::npos);
-  {
-    std::ifstream in(path, std::ios::binary);
-    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    std::ofstream(path + ".cut", std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size() / 2));
-  }
-  EXPECT_NE(load_error(nops, path + ".cut").find("truncated"), std::string::npos);
-  EXPECT_NE(load_error(nops, path + ".missing").find("cannot open"), std::string::npos);
-}
-
 
 TEST(NFieldSpline, ReducedConvergesToTheFullSplineWhichMeetsItsConstraints)
 {

@@ -17,6 +17,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include <complex>
 #include <functional>
 #include <memory>
 #include <random>
@@ -28,25 +29,32 @@ namespace Model_reduction {
 namespace internal {
 
 /// A converged pair with its true residual and the tolerance it met.
-struct Ritz_pair
+template <class Scalar>
+struct Basic_ritz_pair
 {
+  typedef typename Float32_of<Scalar>::type Float32;
+  typedef Eigen::Matrix<Scalar, Eigen::Dynamic, 1> Vector;
   double value;
-  double* data;      ///< a column of a `Vector_store`: the standard form (`D^1/2 x`), unit length
+  Scalar* data;      ///< a column of a `Column_store<Scalar>`: the standard form (`D^1/2 x`), unit length
   Eigen::Index size; ///< of the vector
   double residual, tolerance;
   /// Once no window needs the vector in double (`Eigensolver_options::float32_vectors`): a
-  /// column of a `Column_store<float>`, the original variables (`x`) rounded; `data` is then null.
-  float* rounded = nullptr;
-  Eigen::Map<Eigen::VectorXd> vector() const { return Eigen::Map<Eigen::VectorXd>(data, size); }
+  /// column of a `Column_store<Float32>`, the original variables (`x`) rounded; `data` is then null.
+  Float32* rounded = nullptr;
+  Eigen::Map<Vector> vector() const { return Eigen::Map<Vector>(data, size); }
 };
-typedef std::vector<Ritz_pair> Ritz_set;
+template <class Scalar>
+using Basic_ritz_set = std::vector<Basic_ritz_pair<Scalar>>;
+typedef Basic_ritz_pair<double> Ritz_pair;
+typedef Basic_ritz_set<double> Ritz_set;
 
 // Krylov basis and projected matrix, kept from window to window of a chain: allocating
 // them per window made page faults a fifth of the run.  Sized to the largest basis a window
 // may reach: the restart limit when restarting, the unrestarted limit otherwise.
+template <class Scalar>
 struct Lanczos_workspace
 {
-  Eigen::MatrixXd Q, H;
+  Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic> Q, H;
   void reserve(Eigen::Index n, int columns)
   {
     if(Q.rows() != n || Q.cols() < columns) resize_in_huge_pages(Q, n, columns);
@@ -72,27 +80,33 @@ struct Inaccurate_solves
 {
 };
 
-/// Block classical Gram-Schmidt step: `C = Q_J^T Z`, then `Z -= Q_J C`, for the columns
+/// Block classical Gram-Schmidt step: `C = Q_J^H Z`, then `Z -= Q_J C`, for the columns
 /// `J = first .. first + count - 1` of `Q`; returns `C`.
 Eigen::MatrixXd project_out_of_columns(const Eigen::Ref<const Eigen::MatrixXd>& Q, Eigen::Index first,
                                        Eigen::Index count, Eigen::MatrixXd& Z);
+Eigen::MatrixXcd project_out_of_columns(const Eigen::Ref<const Eigen::MatrixXcd>& Q, Eigen::Index first,
+                                        Eigen::Index count, Eigen::MatrixXcd& Z);
 
 /// Converged vectors a window is kept orthogonal to, read where they are kept (columns of
-/// `Vector_store` blocks), as runs of adjacent columns: a copy into one matrix cost the
+/// `Column_store` blocks), as runs of adjacent columns: a copy into one matrix cost the
 /// memory of ~50 vectors per chain (208 MB at the armadillo's 519k edges) and a pass over
 /// them per window.
+template <class Scalar>
 class Locked_columns
 {
 public:
-  Locked_columns(const std::vector<const double*>& columns, Eigen::Index rows);
+  typedef Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic> Matrix;
+  Locked_columns(const std::vector<const Scalar*>& columns, Eigen::Index rows);
   Eigen::Index count() const { return count_; }
-  /// `Z -= V (V^T Z)` for the locked vectors `V` (orthonormal), one Gram-Schmidt step.
-  void project_out(Eigen::MatrixXd& Z) const;
+  /// `Z -= V (V^H Z)` for the locked vectors `V` (orthonormal), one Gram-Schmidt step.
+  void project_out(Matrix& Z) const;
 
 private:
-  std::vector<std::pair<const double*, Eigen::Index>> runs_; // first column, columns
+  std::vector<std::pair<const Scalar*, Eigen::Index>> runs_; // first column, columns
   Eigen::Index rows_ = 0, count_ = 0;
 };
+extern template class Locked_columns<double>;
+extern template class Locked_columns<std::complex<double>>;
 
 // One block Lanczos run at shift `w.sigma` on the complement of `locked` (and the
 // kernel).  Collects the converged pairs with eigenvalue in (lo, hi] into `window`
@@ -100,10 +114,12 @@ private:
 // in `store`.  `solver` holds the factor of `A - w.sigma D`; a polish overwrites it
 // (shifted next to a Ritz value), so after a return or a throw it may hold another shift.
 // \throws Inaccurate_solves (only without `w.refine`), Numerical_failure.
-void lanczos_window(const Standard_eigenproblem& p, Sparse_ldlt_solver& solver,
-                    const Window& w, const Locked_columns& locked, const Eigensolver_options& options,
-                    std::mt19937_64& generator, Lanczos_workspace& space, Ritz_set& window, Ritz_set& carry,
-                    Vector_store& store, int& applications, int& basis_used, const std::function<void(int)>& report);
+template <class Scalar>
+void lanczos_window(const Basic_standard_eigenproblem<Scalar>& p, Basic_sparse_ldlt_solver<Scalar>& solver,
+                    const Window& w, const Locked_columns<Scalar>& locked, const Eigensolver_options& options,
+                    std::mt19937_64& generator, Lanczos_workspace<Scalar>& space, Basic_ritz_set<Scalar>& window,
+                    Basic_ritz_set<Scalar>& carry, Column_store<Scalar>& store, int& applications, int& basis_used,
+                    const std::function<void(int)>& report);
 
 } // namespace internal
 } // namespace Model_reduction

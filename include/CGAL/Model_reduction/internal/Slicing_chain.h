@@ -51,7 +51,8 @@ struct Chain_monitor
 /// limit -- until `count` pairs above `lo` are found.  While it runs, another thread may
 /// lower its end (`limit`, `below_limit`, `count`) to a shift above the window being run
 /// (`take_over_top`); `mutex` guards those fields, `working_hi` and `density`.
-struct Chain
+template <class Scalar>
+struct Basic_chain
 {
   double lo = 0;
   int below_lo = 0;
@@ -61,9 +62,9 @@ struct Chain
   double density = 1; ///< estimated eigenvalues per unit of lambda
   std::uint64_t seed = 1;
   // Results.
-  Vector_store store;           ///< the double vectors of `found`
-  Column_store<float> rounded;  ///< those rounded to float32 (`Ritz_pair::rounded`)
-  Ritz_set found;
+  Column_store<Scalar> store;   ///< the double vectors of `found`
+  Column_store<typename Float32_of<Scalar>::type> rounded; ///< those rounded to float32 (`Basic_ritz_pair::rounded`)
+  Basic_ritz_set<Scalar> found;
   double end = 0;    ///< every eigenvalue in (lo, end] is in `found`
   int below_end = 0; ///< inertia at `end`
   int applications = 0, basis_used = 0;
@@ -78,6 +79,7 @@ struct Chain
   /// index it counts up to.
   int below_end_wanted() const { return below_lo + count; }
 };
+typedef Basic_chain<double> Chain;
 
 /// Gives the calling thread's freed heap memory back to the system (glibc; elsewhere
 /// nothing).  Where the process keeps freed memory (`keep_freed_memory`, as the tool and the
@@ -91,15 +93,17 @@ void give_back_freed_heap();
 /// Runs `chain` of problem `p` (`analysis`: the fill-reducing analysis of its `A`), reporting
 /// its converged count as `monitor.converged[index]`.
 /// \throws Abandoned once `monitor.abandon` is set, Numerical_failure.
-void run_chain(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysis, Chain& chain,
-               const Eigensolver_options& options, Chain_monitor& monitor, int index);
+template <class Scalar>
+void run_chain(const Basic_standard_eigenproblem<Scalar>& p, const Basic_sparse_ldlt_solver<Scalar>& analysis,
+               Basic_chain<Scalar>& chain, const Eigensolver_options& options, Chain_monitor& monitor, int index);
 
 /// A shift with `target` eigenvalues (kernel excluded), give or take `slack`, below it,
-/// counted exactly by the inertia; returns the count at the shift it stopped at (after at most
-/// six factorisations).  Starts from `density` (eigenvalues per unit of lambda) and updates it
-/// from the counts found.
-int split_point(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysis, int target, int slack,
-                double& density, double& split);
+/// counted exactly by the inertia; returns the count at the shift it stopped at, `split` (after
+/// at most six factorisations, and three more if shifts fall on eigenvalues).  Starts from
+/// `density` (eigenvalues per unit of lambda) and updates it from the counts found.
+template <class Scalar>
+int split_point(const Basic_standard_eigenproblem<Scalar>& p, const Basic_sparse_ldlt_solver<Scalar>& analysis,
+                int target, int slack, double& density, double& split);
 
 /// Lowers the end of `victim`, a running chain of problem `p`, to an inertia-counted shift
 /// about halfway through what remains of its range above the window it is running, and
@@ -107,19 +111,22 @@ int split_point(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analys
 /// run at once.  `per_window` is the window size; a victim with less than two windows left
 /// is not cut.  Returns the shift, or NaN if nothing was taken (the victim ran on past the
 /// shift while it was counted, or too little was left).
-double take_over_top(const Standard_eigenproblem& p, const Sparse_ldlt_solver& analysis, Chain& victim, int per_window,
-                     Chain& taken);
+template <class Scalar>
+double take_over_top(const Basic_standard_eigenproblem<Scalar>& p, const Basic_sparse_ldlt_solver<Scalar>& analysis,
+                     Basic_chain<Scalar>& victim, int per_window, Basic_chain<Scalar>& taken);
 
 /// Gives the vector of `pair` back, pages included, to the store of `chain` that holds it;
 /// false if neither does.
-inline bool release_vector(Chain& chain, const Ritz_pair& pair)
+template <class Scalar>
+bool release_vector(Basic_chain<Scalar>& chain, const Basic_ritz_pair<Scalar>& pair)
 {
   return pair.data ? chain.store.release(pair.data, false) : chain.rounded.release(pair.rounded, false);
 }
 
 /// Rayleigh-Ritz on the pairs near `split`, found by two chains that did not lock each other's
 /// vectors out: makes them orthonormal again.
-void join_at(const Standard_eigenproblem& p, double split, double tolerance, Ritz_set& pairs);
+template <class Scalar>
+void join_at(const Basic_standard_eigenproblem<Scalar>& p, double split, double tolerance, Basic_ritz_set<Scalar>& pairs);
 
 } // namespace internal
 } // namespace Model_reduction

@@ -8,39 +8,53 @@
 /// Pieces shared by the dense and the sliced eigensolver of `Generalized_eigensolver.h`:
 /// `A x = lambda D x` in its symmetric standard form `D^-1/2 A D^-1/2 y = lambda y`, the
 /// residuals and tolerances every returned pair is checked against, small dense kernels.
+/// Each for `A` real symmetric (`Scalar` double) or complex Hermitian (`std::complex<double>`):
+/// inner products are Hermitian (`adjoint`), eigenvalues, masses and residuals real.
 
 #include <CGAL/Model_reduction/Generalized_eigensolver.h>
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include <complex>
 #include <vector>
 
 namespace CGAL {
 namespace Model_reduction {
 namespace internal {
 
-/// Eigenvalues (ascending) and eigenvectors (overwriting `A`) of a dense symmetric matrix.
+/// Eigenvalues (ascending) and eigenvectors (overwriting `A`) of a dense symmetric or
+/// Hermitian matrix (its lower triangle).
 void symmetric_eigen(Eigen::MatrixXd& A, Eigen::VectorXd& values);
+void symmetric_eigen(Eigen::MatrixXcd& A, Eigen::VectorXd& values);
 
 /// Orthonormal basis of the columns of `X` (thin Householder QR).
-Eigen::MatrixXd orthonormal_columns(const Eigen::MatrixXd& X);
+template <class Scalar>
+Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>
+orthonormal_columns(const Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>& X);
 
 /// `Z = next R` with orthonormal `next` and upper triangular `R`.
-void block_qr(const Eigen::MatrixXd& Z, Eigen::MatrixXd& next, Eigen::MatrixXd& R);
+template <class Scalar>
+void block_qr(const Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>& Z,
+              Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>& next,
+              Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>& R);
 
-/// `A x = lambda D x` with `A` symmetric positive semi-definite, `D` diagonal positive,
-/// and a known kernel, seen in its standard form.
-struct Standard_eigenproblem
+/// `A x = lambda D x` with `A` symmetric (Hermitian) positive semi-definite, `D` diagonal
+/// positive, and a known kernel, seen in its standard form.
+template <class Scalar>
+struct Basic_standard_eigenproblem
 {
-  const Eigen::SparseMatrix<double>& A;
+  typedef Eigen::SparseMatrix<Scalar> Sparse_matrix;
+  typedef Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic> Matrix;
+  typedef Eigen::Matrix<Scalar, Eigen::Dynamic, 1> Vector;
+
+  const Sparse_matrix& A;
   Eigen::VectorXd d, sqrt_d, inv_sqrt_d;
-  Eigen::MatrixXd kernel; ///< orthonormal, standard form
+  Matrix kernel; ///< orthonormal, standard form
   /// Gershgorin bound of the largest eigenvalue of the standard form.
   double largest_eigenvalue_bound = 0;
 
-  Standard_eigenproblem(const Eigen::SparseMatrix<double>& A, const Eigen::VectorXd& d,
-                        const Eigen::MatrixXd& kernel_original);
+  Basic_standard_eigenproblem(const Sparse_matrix& A, const Eigen::VectorXd& d, const Matrix& kernel_original);
 
   /// The residual a pair with eigenvalue `lambda` can reach in double precision:
   /// roundoff of relative size eps in every direction of the vector, amplified by up
@@ -56,38 +70,44 @@ struct Standard_eigenproblem
   /// away from the vector (a component of the mesh a million times smaller than the one
   /// the vector lives on), which would accept a pair with only a few correct digits.
   /// Column by column, so that no temporary as large as `Y` is made.
-  void residuals_of_standard(const Eigen::VectorXd& values, const Eigen::Ref<const Eigen::MatrixXd>& Y, double tolerance,
+  void residuals_of_standard(const Eigen::VectorXd& values, const Eigen::Ref<const Matrix>& Y, double tolerance,
                              Eigen::VectorXd& residuals, Eigen::VectorXd* tolerances = nullptr) const;
 
   /// The same for vectors in the original variables.
-  Eigen::VectorXd residuals(const Eigen::VectorXd& values, const Eigen::MatrixXd& X) const;
-  Eigen::VectorXd tolerances_for(const Eigen::VectorXd& values, const Eigen::MatrixXd& X, double tolerance) const;
+  Eigen::VectorXd residuals(const Eigen::VectorXd& values, const Matrix& X) const;
+  Eigen::VectorXd tolerances_for(const Eigen::VectorXd& values, const Matrix& X, double tolerance) const;
 
   /// `A - sigma D`, for a factorisation.  Made when needed and not kept: a copy per thread
   /// (31 MB at the armadillo's 519k edges) was held through every window, at the peak too.
-  Eigen::SparseMatrix<double> shifted(double sigma) const;
+  Sparse_matrix shifted(double sigma) const;
   /// `(A - sigma D) X`, without the shifted matrix.
-  Eigen::MatrixXd shifted_times(double sigma, const Eigen::MatrixXd& X) const;
+  Matrix shifted_times(double sigma, const Matrix& X) const;
 
   /// Removes the kernel's component of the standard-form columns `Z`.
-  void deflate(Eigen::MatrixXd& Z) const
+  void deflate(Matrix& Z) const
   {
-    if(kernel.cols() > 0) Z -= kernel * (kernel.transpose() * Z);
+    if(kernel.cols() > 0) Z -= kernel * (kernel.adjoint() * Z);
   }
 };
 
+typedef Basic_standard_eigenproblem<double> Standard_eigenproblem;
+extern template struct Basic_standard_eigenproblem<double>;
+extern template struct Basic_standard_eigenproblem<std::complex<double>>;
+
 /// One problem of a spectrum-slicing solve.
+template <class Scalar>
 struct Sliced_request
 {
-  const Standard_eigenproblem& problem;
+  const Basic_standard_eigenproblem<Scalar>& problem;
   int count;
 };
 
 /// The `count` lowest pairs of each request by spectrum slicing (`Generalized_eigensolver.h`):
 /// each cut into chains of windows, one per core on large requests, and the chains of all
 /// the requests run on one pool of threads.
-std::vector<Eigenpairs> sliced_eigenpairs(const std::vector<Sliced_request>& requests,
-                                          const Eigensolver_options& options);
+template <class Scalar>
+std::vector<Basic_eigenpairs<Scalar>> sliced_eigenpairs(const std::vector<Sliced_request<Scalar>>& requests,
+                                                        const Eigensolver_options& options);
 
 } // namespace internal
 } // namespace Model_reduction
