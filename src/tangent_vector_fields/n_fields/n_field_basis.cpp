@@ -6,6 +6,7 @@
 #include <CGAL/Model_reduction/internal/huge_pages.h>
 #include <CGAL/Tangent_vector_fields/errors.h>
 #include <CGAL/Tangent_vector_fields/internal/basis_file.h>
+#include <CGAL/Tangent_vector_fields/internal/scalar_eigenproblem.h>
 
 #include <chrono>
 #include <cmath>
@@ -66,10 +67,7 @@ N_field_basis::N_field_basis(std::shared_ptr<const N_field_operators> operators,
 
   // The problem on the mesh scaled to unit area: S_n does not change, the masses do.
   const double area = total_area(ops.mesh());
-  Model_reduction::Eigensolver_options eigen_options;
-  eigen_options.tolerance = options.tolerance;
-  eigen_options.block_size = options.block_size;
-  eigen_options.seed = options.seed;
+  Model_reduction::Eigensolver_options eigen_options = internal::eigensolver_options(options);
   if(options.progress)
     eigen_options.progress = [&](const Model_reduction::Eigensolver_progress& e) {
       const double f = e.wanted > 0 ? std::min(1., double(e.converged) / e.wanted) : 1.;

@@ -146,45 +146,27 @@ Eigen::VectorXd lowest_on_component(const N_field_operators& ops, const std::vec
     A.resize(m, m);
     A.setFromTriplets(entries.begin(), entries.end());
   }
-  Eigen::VectorXd x(2 * m);
+  Eigen::VectorXcd z;
   try
   {
-    const Eigen::VectorXcd z = lowest_by_lanczos(A, d, options.tolerance);
-    for(Eigen::Index i = 0; i < m; ++i)
-    {
-      x[2 * i] = z[i].real();
-      x[2 * i + 1] = z[i].imag();
-    }
-    return x;
+    z = lowest_by_lanczos(A, d, options.tolerance);
   }
   catch(const Numerical_failure&)
   {
     // S_n nearly singular (a holonomy close to trivial) or slow convergence: the slicing
-    // eigensolver on the real form copes with both.
+    // eigensolver copes with both (its complex Hermitian path: each eigenvalue once).
+    Model_reduction::Eigensolver_options eigen_options;
+    eigen_options.tolerance = options.tolerance;
+    z = Model_reduction::lowest_eigenpairs(A, d, 1, Eigen::MatrixXcd(), eigen_options).vectors.col(0);
   }
-  Eigen::VectorXd d2(2 * m);
-  for(Eigen::Index i = 0; i < m; ++i) d2[2 * i] = d2[2 * i + 1] = d[i];
-  Sparse_matrix R(2 * m, 2 * m);
+  // The real layout: face i at rows 2i (real part) and 2i + 1 (imaginary part).
+  Eigen::VectorXd x(2 * m);
+  for(Eigen::Index i = 0; i < m; ++i)
   {
-    std::vector<Eigen::Triplet<double>> entries;
-    for(Eigen::Index g = 0; g < A.outerSize(); ++g)
-      for(Complex_sparse_matrix::InnerIterator it(A, g); it; ++it)
-      {
-        const double a = it.value().real(), b = it.value().imag();
-        const Eigen::Index f = it.row();
-        entries.emplace_back(2 * f, 2 * g, a);
-        entries.emplace_back(2 * f + 1, 2 * g, b);
-        entries.emplace_back(2 * f, 2 * g + 1, -b);
-        entries.emplace_back(2 * f + 1, 2 * g + 1, a);
-      }
-    R.setFromTriplets(entries.begin(), entries.end());
+    x[2 * i] = z[i].real();
+    x[2 * i + 1] = z[i].imag();
   }
-  Model_reduction::Eigensolver_options eigen_options;
-  eigen_options.tolerance = options.tolerance;
-  // The lowest eigenvalue comes twice (z and i z): ask for the pair.
-  const Model_reduction::Eigenpairs pairs = Model_reduction::lowest_eigenpairs(R, d2, std::min<int>(2, static_cast<int>(d2.size())), Eigen::MatrixXd(),
-                                             eigen_options);
-  return pairs.vectors.col(0);
+  return x;
 }
 
 } // namespace

@@ -266,6 +266,30 @@ TEST(SmoothestNField, SphereHasTwoNSingularitiesOfIndexOneOverN)
   }
 }
 
+TEST(SmoothestNField, WhereLanczosFailsTheSlicingSolverAnswers)
+{
+  // A tolerance below what double precision reaches: the Lanczos run of the smoothest field
+  // cannot meet it and gives up (the space closes on these 80 faces), and the slicing
+  // eigensolver's complex Hermitian path answers (its floor is the rounding floor).  The answer
+  // must be a lowest eigenvector: its Rayleigh quotient the lowest eigenvalue of the real form,
+  // computed densely here.
+  const Mesh sphere = make_icosphere(1);
+  for(int n : {1, 3})
+  {
+    const auto nops = n_field_operators(sphere, n);
+    TVF::Smoothest_n_field_options options;
+    options.tolerance = 1e-15;
+    const Eigen::VectorXd z = TVF::smoothest_n_field(*nops, options);
+    const Eigen::MatrixXd S = Eigen::MatrixXd(nops->S());
+    const Eigen::MatrixXd M = nops->masses().asDiagonal();
+    const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> dense(S, M);
+    const double lowest = dense.eigenvalues()[0];
+    ASSERT_GT(z.norm(), 0) << "n = " << n;
+    const double rayleigh = z.dot(S * z) / z.dot(M * z);
+    EXPECT_NEAR(rayleigh, lowest, 1e-10 * lowest) << "n = " << n;
+  }
+}
+
 TEST(SmoothestNField, CrossFieldOfACubeIsParallelWithItsCornersSingular)
 {
   const Mesh cube = make_cube(3);
