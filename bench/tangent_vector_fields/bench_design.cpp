@@ -152,14 +152,6 @@ std::vector<TVF::Field_constraint> away_from_boundary(const TVF::Intrinsic_mesh&
   return out;
 }
 
-double bounding_box_diagonal(const TVF::Intrinsic_mesh& m)
-{
-  std::array<double, 3> lo{{HUGE_VAL, HUGE_VAL, HUGE_VAL}}, hi{{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL}};
-  for(int v = 0; v < m.number_of_vertices(); ++v)
-    for(int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], m.position(v)[k]), hi[k] = std::max(hi[k], m.position(v)[k]);
-  return std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
-}
-
 double relative_mx_error(const Eigen::VectorXd& masses, const Eigen::VectorXd& x, const Eigen::VectorXd& ref)
 {
   const Eigen::VectorXd d = x - ref;
@@ -316,7 +308,7 @@ int main(int argc, char** argv)
       // The smooth set without the constraints near a boundary (within 2% of the diagonal):
       // the eigenfields are tangent to the boundary, so a constraint crossing it close by is
       // met only through eigenfields far above any affordable d.
-      const auto smooth_away = away_from_boundary(ops.mesh(), smooth, 0.02 * bounding_box_diagonal(ops.mesh()));
+      const auto smooth_away = away_from_boundary(ops.mesh(), smooth, 0.02 * tvf_bench::bounding_box_diagonal(ops.mesh()));
       TVF::Full_spline_solver full_away(hodge);
       full_away.add(smooth_away);
       const Eigen::VectorXd full_away_field = full_away.field();

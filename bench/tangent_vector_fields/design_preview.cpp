@@ -14,6 +14,7 @@
 #include <CGAL/Model_reduction/internal/Thread_pool.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -121,6 +122,14 @@ void editor_answer(const TVF::Operator_matrices& ops, const TVF::Streamline_surf
 
 } // namespace
 
+double bounding_box_diagonal(const TVF::Intrinsic_mesh& m)
+{
+  std::array<double, 3> lo{{HUGE_VAL, HUGE_VAL, HUGE_VAL}}, hi{{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL}};
+  for(int v = 0; v < m.number_of_vertices(); ++v)
+    for(int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], m.position(v)[k]), hi[k] = std::max(hi[k], m.position(v)[k]);
+  return std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+}
+
 void measure_preview(const std::string& mesh_key, const TVF::Operator_matrices& ops,
                      std::shared_ptr<const TVF::Eigenfield_basis> basis, int d,
                      const std::vector<TVF::Field_constraint>& constraints, TVF::Refining_spline_solver& refining,
@@ -132,11 +141,7 @@ void measure_preview(const std::string& mesh_key, const TVF::Operator_matrices& 
   Clock::time_point start = Clock::now();
   const TVF::Streamline_surface surface(ops.shared_mesh());
   const double surface_seconds = seconds_since(start);
-  double diagonal = 0;
-  {
-    const TVF::Streamline_tracer t(ops.shared_mesh(), Eigen::VectorXd::Zero(2 * faces));
-    diagonal = t.bounding_box_diagonal();
-  }
+  const double diagonal = bounding_box_diagonal(ops.mesh());
   // One thread, then every core (as the editor runs it).
   const int cores = CGAL::Model_reduction::internal::thread_count(0);
   const std::vector<int> thread_counts = cores > 1 ? std::vector<int>{1, cores} : std::vector<int>{1};

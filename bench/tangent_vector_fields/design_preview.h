@@ -18,6 +18,9 @@
 
 namespace tvf_bench {
 
+/// The diagonal of the bounding box of the mesh's vertices.
+double bounding_box_diagonal(const CGAL::Tangent_vector_fields::Intrinsic_mesh& m);
+
 /// Measures the preview of the reduced field of `constraints` in a basis of size `d` and appends
 /// its table rows to `rows` (also printed with their details as measured).  Then the editor's
 /// answer to an add with exact answers on: `refining` (holding `constraints`, refining in the
