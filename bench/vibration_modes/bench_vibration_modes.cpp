@@ -91,6 +91,8 @@ void print_modes(const VM::Mode_problem& p, const VM::Modes& modes, bool to_kern
 double step_tolerance = VM::Compressed_mode_options().step_tolerance;
 double admm_tolerance = VM::Compressed_mode_options().admm_tolerance;
 bool trace = false;    // --trace 1: every ICCM iteration to stderr
+bool working_sets = true; // --working-sets 0: ICCM on the whole mesh throughout
+int first_modes = 0;       // --first n: only the first n of the k compressed modes (mu from lambda_k)
 double fixed_mu = 0;  // --shell: --mu overrides --mu-scale
 
 int scalar(const std::string& path, double mu, int k, bool free, bool random)
@@ -107,6 +109,7 @@ int scalar(const std::string& path, double mu, int k, bool free, bool random)
   o.orthogonal_to_kernel = !free;
   o.step_tolerance = step_tolerance;
   o.admm_tolerance = admm_tolerance;
+  o.working_sets = working_sets;
   if(random) o.start = VM::Compressed_mode_start::random;
   const VM::Modes modes = VM::compressed_modes(p, k, o);
   const double total = seconds_since(t0);
@@ -143,6 +146,8 @@ int shell(const std::string& path, int k, double mu_scale, double bending)
   o.sparsity_weight = mu;
   o.step_tolerance = step_tolerance;
   o.admm_tolerance = admm_tolerance;
+  o.working_sets = working_sets;
+  o.ordinary_modes = &ordinary; // computed above to choose mu: not again
   int last_mode = -1;
   o.progress = [&](const VM::Compressed_mode_progress& s) {
     if(s.mode != last_mode)
@@ -153,7 +158,7 @@ int shell(const std::string& path, int k, double mu_scale, double bending)
     last_mode = s.mode;
     return true;
   };
-  const VM::Modes modes = VM::compressed_modes(p, k, o);
+  const VM::Modes modes = VM::compressed_modes(p, first_modes > 0 ? std::min(first_modes, k) : k, o);
   const double t_compressed = seconds_since(t0);
   print_modes(p, modes);
   std::printf("assembly %.2f s, ordinary modes %.2f s, compressed modes %.2f s (ordinary included), peak memory %.0f MB\n",
@@ -198,6 +203,8 @@ int main(int argc, char** argv)
     step_tolerance = std::stod(get("--step-tolerance", std::to_string(step_tolerance)));
     admm_tolerance = std::stod(get("--admm-tolerance", std::to_string(admm_tolerance)));
     trace = get("--trace", "0") == "1";
+    working_sets = get("--working-sets", "1") == "1";
+    first_modes = std::stoi(get("--first", "0"));
     if(a.count("--shell")) fixed_mu = std::stod(get("--mu", "0"));
     if(a.count("--scalar"))
       return scalar(a["--scalar"], std::stod(get("--mu", "0.1124")), std::stoi(get("--modes", "10")),

@@ -8,10 +8,14 @@
 #include <CGAL/Model_reduction/internal/One_blas_thread.h>
 
 #include "constrained_group_lasso.h"
+#include "free_unknowns.h"
+#include "working_set.h"
 
 #include <algorithm>
 #include <random>
 #include <cmath>
+#include <functional>
+#include <memory>
 #include <string>
 
 namespace CGAL {
@@ -37,25 +41,6 @@ Eigen::VectorXd free_part(const Mode_problem& p, const Eigen::VectorXd& u)
                       std::to_string(p.H.rows()) + " unknowns");
 }
 
-// Columns made M-orthonormal (modified Gram-Schmidt twice); columns that are dependent on
-// the earlier ones are dropped.
-Eigen::MatrixXd m_orthonormal(const Eigen::MatrixXd& X, const Eigen::VectorXd& mass)
-{
-  Eigen::MatrixXd Q(X.rows(), 0);
-  for(Eigen::Index j = 0; j < X.cols(); ++j)
-  {
-    Eigen::VectorXd v = X.col(j);
-    const double before = std::sqrt(v.dot(mass.cwiseProduct(v)));
-    for(int pass = 0; pass < 2; ++pass)
-      for(Eigen::Index i = 0; i < Q.cols(); ++i) v -= Q.col(i).dot(mass.cwiseProduct(v)) * Q.col(i);
-    const double after = std::sqrt(v.dot(mass.cwiseProduct(v)));
-    if(!(after > 1e-10 * before)) continue;
-    Q.conservativeResize(Eigen::NoChange, Q.cols() + 1);
-    Q.col(Q.cols() - 1) = v / after;
-  }
-  return Q;
-}
-
 double support_fraction(const Mode_problem& p, const Eigen::VectorXd& u)
 {
   Eigen::Index nonzero = 0;
@@ -63,6 +48,55 @@ double support_fraction(const Mode_problem& p, const Eigen::VectorXd& u)
   return double(nonzero) / double(u.size() / p.group_size);
 }
 
+
+// The state of one mode's ICCM, carried from one working set to the next.
+struct Iccm_run
+{
+  Eigen::VectorXd c; // the unit iterate, over the current problem's unknowns
+  double f = 0;      // its objective
+  double step = 1;   // the M-norm of the last step
+  int outer = 0, inner = 0;
+  bool done = false;
+};
+
+// ICCM on `p` (the whole problem or a working set's) from run.c until it settles or
+// `leave()` asks for another working set after a step.  Inexact steps while the iterate
+// still moves: the convex problem of a plane that is about to change is solved to a tenth
+// of the last step (at most 1e-2), down to the requested tolerance near the end.
+void iccm(const Mode_problem& p, internal::Constrained_group_lasso& admm, double mu, double budget,
+          const Compressed_mode_options& options, int rough_inner, Iccm_run& run, const std::function<bool()>& leave,
+          const std::function<void()>& report)
+{
+  for(run.done = false; !run.done && run.outer < options.max_outer_iterations;)
+  {
+    ++run.outer;
+    const double tolerance = options.exact_convex_steps ? options.admm_tolerance : std::min(1e-2, 0.1 * run.step);
+    // The budget is approached from the start's own |c|_{1,M}: the plane c^T M u = 1
+    // meets the ball of radius beta only if beta max_v |c_v| >= 1, which a spread-out
+    // start (an ordinary mode) may miss; a ball at 0.8 |c|_{1,M} keeps meeting it as long
+    // as c is not flat (max_v |c_v| >= 1 / |c|_{1,M} always), and c shrinks with it.
+    double level = budget;
+    if(budget > 0)
+    {
+      level = std::max(budget, budget_continuation * mass_weighted_l1(p, run.c));
+      admm.set_l1_budget(level);
+    }
+    // While the steps are long (above 1e-2), at most `rough_inner` ADMM iterations.
+    run.inner += admm.solve_on_plane(run.c, run.step > 1e-2 ? rough_inner : options.max_inner_iterations, tolerance);
+    const Eigen::VectorXd& u = admm.u();
+    const double norm = admm.m_norm(u); // >= 1: u lies on the tangent plane c^T M u = 1
+    const Eigen::VectorXd next = u / norm;
+    const double f_next = compressed_objective(p, next, mu);
+    run.step = admm.m_norm(next - run.c);
+    run.done = admm.converged() && run.f - f_next <= options.objective_tolerance * std::abs(f_next) &&
+               run.step <= options.step_tolerance && level == budget;
+    admm.rescale(1 / norm);
+    run.c = next;
+    run.f = f_next;
+    report();
+    if(!run.done && leave()) return;
+  }
+}
 } // namespace
 
 double mass_weighted_l1(const Mode_problem& p, const Eigen::VectorXd& u_in)
@@ -100,8 +134,22 @@ Modes compressed_modes(const Mode_problem& p, int count, const Compressed_mode_o
   // started there stays there (fertility's scalar problem, 10 modes: objective 17.74 from
   // the constants, 17.23 without them).
   const Eigen::Index room = p.H.rows() - p.kernel.cols();
-  const Modes ordinary = lowest_vibration_modes(p, int(std::min<Eigen::Index>(count, room)), options.eigensolver);
-  const Eigen::Index known = ordinary.energies.size();
+  const int wanted = int(std::min<Eigen::Index>(count, room));
+  Modes computed;
+  if(options.ordinary_modes)
+  {
+    const Modes& given = *options.ordinary_modes;
+    if(given.energies.size() < wanted || given.vectors.cols() != given.energies.size() ||
+       (given.vectors.rows() != p.H.rows() && given.vectors.rows() != p.full_size))
+      throw Invalid_input("compressed modes: the ordinary modes given hold " + std::to_string(given.energies.size()) +
+                          " vectors of " + std::to_string(given.vectors.rows()) + " entries; " +
+                          std::to_string(wanted) + " of " + std::to_string(internal::full_size_of(p)) +
+                          " entries are needed");
+  }
+  else
+    computed = lowest_vibration_modes(p, wanted, options.eigensolver);
+  const Modes& ordinary = options.ordinary_modes ? *options.ordinary_modes : computed;
+  const Eigen::Index known = std::min<Eigen::Index>(ordinary.energies.size(), wanted);
   Eigen::MatrixXd start(p.H.rows(), count);
   std::mt19937_64 rng(options.eigensolver.seed);
   std::normal_distribution<double> normal;
@@ -119,7 +167,11 @@ Modes compressed_modes(const Mode_problem& p, int count, const Compressed_mode_o
   Model_reduction::internal::One_blas_thread one_blas_thread;
   internal::Constrained_group_lasso admm(p, mu, options.admm_tolerance);
   if(budget > 0) admm.set_l1_budget(budget);
-  if(options.orthogonal_to_kernel) admm.set_fixed(m_orthonormal(p.kernel, p.mass));
+  // The fixed directions: the kernel (M-orthonormal) and then each mode found.
+  Eigen::MatrixXd fixed = options.orthogonal_to_kernel ? internal::m_orthonormal(p.kernel, p.mass) : Eigen::MatrixXd(p.H.rows(), 0);
+  admm.set_fixed(fixed);
+  const bool working_sets = options.working_sets && budget == 0 && mu > 0;
+  const std::size_t groups = std::size_t(p.H.rows() / p.group_size);
   Modes modes;
   modes.kernel_dimension = int(p.kernel.cols());
   modes.sparsity_weight = mu;
@@ -129,47 +181,98 @@ Modes compressed_modes(const Mode_problem& p, int count, const Compressed_mode_o
   for(int i = 0; i < count; ++i)
   {
     // Start from the i-th ordinary mode, made orthogonal to the modes found so far.
-    Eigen::VectorXd c = admm.project_out_fixed(start.col(i));
-    if(!(admm.m_norm(c) > 1e-3)) c = admm.project_out_fixed(start.rightCols(count - i).rowwise().sum());
-    c /= admm.m_norm(c);
-    admm.start(c, eigenvalue(i));
-    double f = compressed_objective(p, c, mu);
-    int outer = 0, inner = 0;
-    // Inexact steps while the iterate still moves: the convex problem of a plane that is
-    // about to change is solved to a tenth of the last step (at most 1e-2), down to the
-    // requested tolerance near the end.
-    double step = 1;
-    for(bool done = false; !done && outer < options.max_outer_iterations;)
-    {
-      ++outer;
-      const double tolerance = options.exact_convex_steps ? options.admm_tolerance : std::min(1e-2, 0.1 * step);
-      // The budget is approached from the start's own |c|_{1,M}: the plane c^T M u = 1
-      // meets the ball of radius beta only if beta max_v |c_v| >= 1, which a spread-out
-      // start (an ordinary mode) may miss; a ball at 0.8 |c|_{1,M} keeps meeting it as long
-      // as c is not flat (max_v |c_v| >= 1 / |c|_{1,M} always), and c shrinks with it.
-      double level = budget;
-      if(budget > 0)
+    Iccm_run run;
+    run.c = admm.project_out_fixed(start.col(i));
+    if(!(admm.m_norm(run.c) > 1e-3)) run.c = admm.project_out_fixed(start.rightCols(count - i).rowwise().sum());
+    run.c /= admm.m_norm(run.c);
+    run.f = compressed_objective(p, run.c, mu);
+    admm.start(run.c, eigenvalue(i));
+    // The working set (all vertices at first), its problem and ADMM.
+    internal::Group_set set(groups, 1), next_set;
+    std::unique_ptr<internal::Restricted_problem> restricted;
+    std::unique_ptr<internal::Constrained_group_lasso> restricted_admm;
+    auto z_over_all = [&] { return restricted ? restricted->expand(restricted_admm->z(), p.H.rows()) : admm.z(); };
+    // The working set follows the support: it shrinks to the support and two rings of H's
+    // pattern once that fills less than half of it, and grows to the support and three
+    // rings (room to grow: each change costs a factorisation) when the support and one
+    // ring leave it; after the first-order conditions have failed outside a set, it only
+    // grows.
+    bool may_shrink = working_sets;
+    auto leave = [&] {
+      if(!working_sets) return false;
+      const internal::Group_set support = internal::support_of(p, z_over_all());
+      internal::Group_set near = support;
+      internal::grow(p, near, 1);
+      bool outside = false;
+      for(std::size_t v = 0; v < groups && !outside; ++v) outside = near[v] && !set[v];
+      next_set = near;
+      internal::grow(p, next_set, outside ? 2 : 1);
+      if(outside)
       {
-        level = std::max(budget, budget_continuation * mass_weighted_l1(p, c));
-        admm.set_l1_budget(level);
+        for(std::size_t v = 0; v < groups; ++v) next_set[v] |= set[v] && !may_shrink;
+        return true;
       }
-      inner += admm.solve_on_plane(c, options.max_inner_iterations, tolerance);
-      const Eigen::VectorXd& u = admm.u();
-      const double norm = admm.m_norm(u); // >= 1: u lies on the tangent plane c^T M u = 1
-      const Eigen::VectorXd next = u / norm;
-      const double f_next = compressed_objective(p, next, mu);
-      step = admm.m_norm(next - c);
-      done = admm.converged() && f - f_next <= options.objective_tolerance * std::abs(f_next) &&
-             step <= options.step_tolerance && level == budget;
-      admm.rescale(1 / norm);
-      c = next;
-      f = f_next;
-      if(options.progress && !options.progress({i, count, outer, inner, f, support_fraction(p, admm.z())}))
+      return may_shrink && double(internal::size_of(next_set)) < 0.5 * double(internal::size_of(set));
+    };
+    auto report = [&] {
+      if(options.progress &&
+         !options.progress({i, count, run.outer, run.inner, run.f, support_fraction(p, z_over_all())}))
         throw Cancelled("compressed modes: cancelled at mode " + std::to_string(i + 1) + " of " + std::to_string(count));
+    };
+    for(;;)
+    {
+      if(restricted)
+        iccm(restricted->problem, *restricted_admm, mu, budget, options, options.max_inner_iterations, run, leave,
+             report);
+      else
+        // With working sets, the whole mesh's long steps only locate the support: a rough
+        // convex step serves (24 ADMM iterations: no refactorisation of the largest matrix,
+        // whose rho check comes at 25), unless exact steps are asked for.
+        iccm(p, admm, mu, budget, options,
+             working_sets && !options.exact_convex_steps ? std::min(24, options.max_inner_iterations)
+                                                         : options.max_inner_iterations,
+             run, leave, report);
+      if(!run.done && run.outer >= options.max_outer_iterations) break;
+      if(run.done)
+      {
+        if(!restricted) break;
+        // The whole problem's first-order conditions outside the set; where they fail,
+        // those vertices and their two rings join it.
+        const Eigen::VectorXd sparse = restricted_admm->feasible_sparse_iterate();
+        const std::vector<Eigen::Index> violated = internal::violations_outside(
+            p, fixed, restricted->expand(sparse.size() > 0 ? sparse : run.c, p.H.rows()), mu, set, 1e-3);
+        if(violated.empty()) break;
+        internal::Group_set joining(groups, 0);
+        for(Eigen::Index v : violated) joining[std::size_t(v)] = 1;
+        internal::grow(p, joining, 2);
+        next_set = set;
+        for(std::size_t v = 0; v < groups; ++v) next_set[v] |= joining[v];
+        may_shrink = false;
+      }
+      // ICCM goes on in the next working set from the current iterate restricted to it, the
+      // ADMM warm-started from the current sparse iterate and dual.
+      auto over_all = [&](const Eigen::VectorXd& x) { return restricted ? restricted->expand(x, p.H.rows()) : x; };
+      const Eigen::VectorXd c_over_all = over_all(run.c);
+      internal::Constrained_group_lasso& before = restricted ? *restricted_admm : admm;
+      const Eigen::VectorXd z_over_all_before = over_all(before.z()), w_over_all = over_all(before.w());
+      set.swap(next_set);
+      auto next = std::make_unique<internal::Restricted_problem>(p, set);
+      auto next_admm = std::make_unique<internal::Constrained_group_lasso>(next->problem, mu, options.admm_tolerance);
+      next_admm->set_fixed(internal::m_orthonormal(next->restrict(fixed), next->problem.mass));
+      run.c = next_admm->project_out_fixed(next->restrict(c_over_all));
+      run.c /= next_admm->m_norm(run.c);
+      run.f = compressed_objective(next->problem, run.c, mu);
+      next_admm->start(run.c, eigenvalue(i), before.rho());
+      next_admm->set_state(next->restrict(z_over_all_before), next->restrict(w_over_all), before.rho());
+      restricted = std::move(next);
+      restricted_admm = std::move(next_admm);
     }
     // The mode: the sparse iterate (exact zeros) if it is feasible on its support.
-    const Eigen::VectorXd sparse = admm.feasible_sparse_iterate();
-    if(sparse.size() > 0 && admm.m_norm(admm.project_out_fixed(sparse) - sparse) < 1e-10) c = sparse;
+    internal::Constrained_group_lasso& last = restricted ? *restricted_admm : admm;
+    Eigen::VectorXd c = run.c;
+    const Eigen::VectorXd sparse = last.feasible_sparse_iterate();
+    if(sparse.size() > 0 && last.m_norm(last.project_out_fixed(sparse) - sparse) < 1e-10) c = sparse;
+    if(restricted) c = restricted->expand(c, p.H.rows());
     // The budget holds up to the ADMM's tolerance (the unit iterate is the ball's point
     // rescaled by its M-norm, 1 within the residuals); far beyond it, the plane never met
     // the ball: no unit vector within the budget satisfies this mode's constraints.
@@ -179,12 +282,14 @@ Modes compressed_modes(const Mode_problem& p, int count, const Compressed_mode_o
                               std::to_string(mass_weighted_l1(p, c)) + ")");
     found.col(i) = c;
     admm.add_fixed(c);
+    fixed.conservativeResize(Eigen::NoChange, fixed.cols() + 1);
+    fixed.rightCols(1) = c;
     modes.energies[i] = c.dot(p.H * c);
     modes.objectives[i] = compressed_objective(p, c, mu);
     modes.l1_norms[i] = mass_weighted_l1(p, c);
     modes.support_fractions[i] = support_fraction(p, c);
-    modes.outer_iterations.push_back(outer);
-    modes.inner_iterations.push_back(inner);
+    modes.outer_iterations.push_back(run.outer);
+    modes.inner_iterations.push_back(run.inner);
   }
   modes.vectors = p.expand(found);
   return modes;

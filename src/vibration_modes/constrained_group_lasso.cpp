@@ -69,7 +69,7 @@ Eigen::VectorXd Constrained_group_lasso::project_out_fixed(const Eigen::VectorXd
   return r;
 }
 
-void Constrained_group_lasso::start(const Eigen::VectorXd& c, double eigenvalue)
+void Constrained_group_lasso::start(const Eigen::VectorXd& c, double eigenvalue, double given_rho)
 {
   u_ = z_ = c;
   w_ = Eigen::VectorXd::Zero(c.size());
@@ -78,7 +78,7 @@ void Constrained_group_lasso::start(const Eigen::VectorXd& c, double eigenvalue)
   // rho starts at 10x the mode's eigenvalue.  ADMM iterations summed over the modes, against
   // 1x: fertility as a shell, 3 modes, mu 4 lambda_3: 747 against 1,635; mu 16 lambda_3: 3,836
   // against 4,809; fertility's scalar problem, 10 modes: 5,153 against 5,159 (same objectives).
-  const double rho = 10 * eigenvalue;
+  const double rho = given_rho > 0 ? given_rho : 10 * eigenvalue;
   if(!A_.is_factored() || rho > 4 * rho_ || rho < rho_ / 4) factor(rho);
   if(WF_.cols() != F_.cols()) WF_ = A_.solve(MF_);
 }

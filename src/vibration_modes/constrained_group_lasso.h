@@ -36,11 +36,21 @@ public:
   /// One more fixed direction, M-unit and M-orthogonal to the others.
   void add_fixed(const Eigen::VectorXd& v);
   Eigen::VectorXd project_out_fixed(const Eigen::VectorXd& v) const;
+  const Eigen::MatrixXd& fixed() const { return F_; }
   double m_norm(const Eigen::VectorXd& v) const;
 
   /// A new mode: u = z = c, w = 0, and rho at 10x `eigenvalue` (refactors only if rho
-  /// changes by more than a factor 4).
-  void start(const Eigen::VectorXd& c, double eigenvalue);
+  /// changes by more than a factor 4), or at `rho` if given (> 0).
+  void start(const Eigen::VectorXd& c, double eigenvalue, double rho = 0);
+  /// After `start`, the sparse iterate and the scaled dual (the dual over `rho`) of an
+  /// earlier run, another working set's (restricted or extended by zeros): its warm start.
+  void set_state(const Eigen::VectorXd& z, const Eigen::VectorXd& w, double rho)
+  {
+    z_ = z;
+    w_ = w * (rho / rho_);
+  }
+  const Eigen::VectorXd& w() const { return w_; }
+  double rho() const { return rho_; }
   /// ADMM on the plane c^T M u = 1 from the current state until both residuals are below
   /// `tolerance` (relative; at least the constructor's) or `max_iterations`; returns the
   /// iterations made.  `converged()` says whether the residuals met the tolerance.
