@@ -9,8 +9,10 @@
 //     sum_i phi_i^T K phi_i + mu sum_j m_j |phi_ij|: the anchors' measurements are in these units.
 //     As there, modes need not be orthogonal to the constants (--kernel free), unless asked.
 //   bench_vibration_modes --shell MESH [--modes 50] [--mu-scale 4] [--bending 1e-3] [--trace 1]
+//                         [--first n] [--working-sets 0|1]
 //     Compressed modes of the mesh as a shell (scaled to unit area), mu = mu-scale times the
-//     last ordinary mode's eigenvalue over sqrt(area).
+//     last ordinary mode's eigenvalue over sqrt(area); --first n computes only the first n
+//     of them (same mu), --working-sets 0 runs ICCM on the whole mesh throughout.
 //   bench_vibration_modes --sizes MESH [--subdivisions 2]
 //     Ordinary shell modes: time per mode against k and the mesh size (Loop subdivision).
 
@@ -161,7 +163,7 @@ int shell(const std::string& path, int k, double mu_scale, double bending)
   const VM::Modes modes = VM::compressed_modes(p, first_modes > 0 ? std::min(first_modes, k) : k, o);
   const double t_compressed = seconds_since(t0);
   print_modes(p, modes);
-  std::printf("assembly %.2f s, ordinary modes %.2f s, compressed modes %.2f s (ordinary included), peak memory %.0f MB\n",
+  std::printf("assembly %.2f s, ordinary modes %.2f s, compressed modes %.2f s (given the ordinary modes), peak memory %.0f MB\n",
               t_assembly, t_ordinary, t_compressed, peak_memory_bytes() / 1e6);
   return 0;
 }
@@ -220,6 +222,6 @@ int main(int argc, char** argv)
     return 1;
   }
   std::cerr << "usage: bench_vibration_modes --scalar MESH [--mu m] [--modes k] | --shell MESH [--modes k] "
-               "[--mu-scale s] [--bending kb] | --sizes MESH [--subdivisions s]\n";
+               "[--mu-scale s] [--bending kb] [--first n] [--working-sets 0|1] | --sizes MESH [--subdivisions s]\n";
   return 2;
 }

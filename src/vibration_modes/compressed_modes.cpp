@@ -64,7 +64,7 @@ struct Iccm_run
 // still moves: the convex problem of a plane that is about to change is solved to a tenth
 // of the last step (at most 1e-2), down to the requested tolerance near the end.
 void iccm(const Mode_problem& p, internal::Constrained_group_lasso& admm, double mu, double budget,
-          const Compressed_mode_options& options, int rough_inner, Iccm_run& run, const std::function<bool()>& leave,
+          const Compressed_mode_options& options, Iccm_run& run, const std::function<bool()>& leave,
           const std::function<void()>& report)
 {
   for(run.done = false; !run.done && run.outer < options.max_outer_iterations;)
@@ -81,8 +81,7 @@ void iccm(const Mode_problem& p, internal::Constrained_group_lasso& admm, double
       level = std::max(budget, budget_continuation * mass_weighted_l1(p, run.c));
       admm.set_l1_budget(level);
     }
-    // While the steps are long (above 1e-2), at most `rough_inner` ADMM iterations.
-    run.inner += admm.solve_on_plane(run.c, run.step > 1e-2 ? rough_inner : options.max_inner_iterations, tolerance);
+    run.inner += admm.solve_on_plane(run.c, options.max_inner_iterations, tolerance);
     const Eigen::VectorXd& u = admm.u();
     const double norm = admm.m_norm(u); // >= 1: u lies on the tangent plane c^T M u = 1
     const Eigen::VectorXd next = u / norm;
@@ -222,16 +221,9 @@ Modes compressed_modes(const Mode_problem& p, int count, const Compressed_mode_o
     for(;;)
     {
       if(restricted)
-        iccm(restricted->problem, *restricted_admm, mu, budget, options, options.max_inner_iterations, run, leave,
-             report);
+        iccm(restricted->problem, *restricted_admm, mu, budget, options, run, leave, report);
       else
-        // With working sets, the whole mesh's long steps only locate the support: a rough
-        // convex step serves (24 ADMM iterations: no refactorisation of the largest matrix,
-        // whose rho check comes at 25), unless exact steps are asked for.
-        iccm(p, admm, mu, budget, options,
-             working_sets && !options.exact_convex_steps ? std::min(24, options.max_inner_iterations)
-                                                         : options.max_inner_iterations,
-             run, leave, report);
+        iccm(p, admm, mu, budget, options, run, leave, report);
       if(!run.done && run.outer >= options.max_outer_iterations) break;
       if(run.done)
       {

@@ -156,12 +156,11 @@ TEST(CompressedModes, WorkingSetsReachTheWholeMeshsModes)
   // Local modes of the elephant (2,775 vertices, CGAL's data): ICCM moves to working sets
   // (the support grown by two rings fills less than half of the vertices) and here ends at
   // the modes that ICCM on the whole mesh reaches from the same start: the same objectives
-  // and vectors.  Without the first-order check outside a set it returns a set's own
-  // optimum (this test then fails: objectives 0.63 and 1.57 higher at k = 2; the
-  // armadillo's first mode 286.146 against 285.58).  The problem is not convex: the paths
-  // differ (rough first steps, sets), and at other weights they can end at different local
-  // minima (k = 2 here: the first mode at 227.14 against 226.51), so this checks a weight
-  // where both paths meet.
+  // and vectors (it fails if the sets leave out the earlier modes' constraints: mode 3 at
+  // 407.904 against 407.935, not orthogonal).  The first-order check outside a set does not
+  // act here (the sets held the supports); the armadillo's first mode needs it (286.146
+  // without, 285.58 with).  The problem is not convex and the paths differ, so other
+  // weights may end at other local minima.
   if(cgal_data_dir().empty()) GTEST_SKIP() << cgal_data_missing();
   Mesh elephant;
   ASSERT_TRUE(read_mesh(cgal_data_dir() + "/meshes/elephant.off", elephant));

@@ -66,13 +66,12 @@ struct Compressed_mode_options
   /// fills less than half of the vertices, its convex problems are solved on those
   /// vertices only (a smaller factorisation, and earlier modes elsewhere drop out of the
   /// constraints); the set shrinks again with the support, and grows to the support and
-  /// three rings when the support reaches its edge.  A set's answer is the whole
-  /// problem's once the first-order conditions also hold outside it (else the vertices
-  /// where they fail join it).  The whole mesh's long steps (above 1e-2) then take at most
-  /// 24 ADMM iterations each: they only locate the support.  Only with a sparsity weight
-  /// (not a budget).  The armadillo as a shell (43k vertices, mu 4 lambda_50), first mode:
-  /// 19 s against about 150 s on the whole mesh, the same objective (285.58).  The problem
-  /// is not convex, and the other path may end at another local minimum.
+  /// three rings when the support reaches its edge (the ADMM warm-started across sets).
+  /// A set's answer is the whole problem's once the first-order conditions also hold
+  /// outside it (else the vertices where they fail join it).  Only with a sparsity weight
+  /// (not a budget).  Fertility as a shell, 10 modes at mu 64 lambda_10 (supports 13-33 %):
+  /// 32.8 s against 70.9 s on the whole mesh, objective sum 7998.85 against 7997.65 (the
+  /// same local minima but two, within 0.15 %).
   bool working_sets = true;
   /// The problem's ordinary modes (`lowest_vibration_modes`), if the caller has them: the
   /// starting vectors and rho's scale are taken from them instead of being computed again.
