@@ -200,6 +200,7 @@ Modes compressed_modes(const Mode_problem& p, int count, const Compressed_mode_o
     auto leave = [&] {
       if(!working_sets) return false;
       const internal::Group_set support = internal::support_of(p, z_over_all());
+      if(internal::size_of(support) == 0) return false; // no set from an empty sparse iterate
       internal::Group_set near = support;
       internal::grow(p, near, 1);
       bool outside = false;

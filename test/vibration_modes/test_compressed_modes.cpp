@@ -187,6 +187,25 @@ TEST(CompressedModes, WorkingSetsReachTheWholeMeshsModes)
   std::printf("ADMM iterations for %d modes: %d on the whole mesh, %d with working sets\n", k, steps[0], steps[1]);
 }
 
+TEST(CompressedModes, HugeSparsityWeightsGiveFiniteUnitModes)
+{
+  // At mu a million times the problem's scale the sparse iterate keeps a single vertex (and
+  // may keep none on the way): the modes must still be finite, M-orthonormal and orthogonal
+  // to the rigid motions.
+  const VM::Mode_problem p = shell_problem(lumpy_sphere(2));
+  const VM::Modes ordinary = VM::lowest_vibration_modes(p, 2);
+  VM::Compressed_mode_options options;
+  options.sparsity_weight = 1e6 * typical_mu(p, ordinary, 2);
+  options.ordinary_modes = &ordinary;
+  options.max_outer_iterations = 20;
+  const VM::Modes modes = VM::compressed_modes(p, 2, options);
+  ASSERT_TRUE(modes.vectors.allFinite());
+  const Eigen::MatrixXd G = modes.vectors.transpose() * p.mass.asDiagonal() * modes.vectors;
+  EXPECT_LT((G - Eigen::MatrixXd::Identity(2, 2)).cwiseAbs().maxCoeff(), 1e-8);
+  EXPECT_LT((p.kernel.transpose() * p.mass.asDiagonal() * modes.vectors).cwiseAbs().maxCoeff(),
+            1e-8 * p.kernel.cwiseAbs().maxCoeff());
+}
+
 TEST(CompressedModes, OrdinaryModesGivenAreNotComputedAgain)
 {
   // Given the problem's ordinary modes, the result is the one computed from scratch (the
