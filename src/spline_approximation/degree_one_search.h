@@ -362,13 +362,16 @@ public:
     return {total, std::sqrt(largest)};
   }
 
-private:
   // The unwrapped candidate of knot v (closed: any v, a period of candidates per K knots).
   Index knot_candidate(const Knots& vk, Index v) const
   {
     const Index K = Index(vk.size());
     return closed_ ? vk[std::size_t(v - floor_div(v, K) * K)] + floor_div(v, K) * m_ : vk[std::size_t(v)];
   }
+  Index number_of_candidates() const { return m_; }
+  bool closed() const { return closed_; }
+
+private:
 
   const Problem& p_;
   const Eigen::MatrixXd& P_;
@@ -381,6 +384,11 @@ private:
 // Sweeps and refits until the squared error falls by less than 1e-3 relative or after `rounds`
 // sweeps; the fit returned is a least-squares fit on its knots (knot_relocation.cpp).
 Spline_fit relocated(const Problem& p, const Degree_one_search& search, Spline_fit fit, double lambda, int rounds = 8);
+
+// Two knots within a short window removed and one added where the squared error falls most, the
+// knots around both places slid (knot_exchange.cpp): true, with `fit` replaced by the new fit
+// (one knot fewer), where the goal allows it.
+bool remove_two_add_one(const Problem& p, const Goal& goal, const Degree_one_search& search, Spline_fit& fit);
 
 // A closed curve's window of a knot needs five distinct vertices.
 constexpr std::size_t fewest_closed_knots = 5;
