@@ -5,8 +5,8 @@
 // past the last vertex or two where no single removal holds.
 //
 // Greedy removal with relocation stopped one or two vertices over the optimum on small counts
-// (bench table 8: 15 or 22 vertices, where one more is already 5 %): every single removal
-// left the error over the bound even after the knots slid.  Two things were missing.  The
+// (bench table 8: one over an optimum of 15 vertices, 6.7 %; two over 22, 9.1 %): every single
+// removal left the error over the bound even after the knots slid.  Two things were missing.  The
 // optimum's knots may lie a candidate or two off the fit's over several knots in a row, and a
 // sweep moves one knot at a time: where a chain of knots has to move together, each knot
 // alone, its neighbours held, only loses.  And the knot to give up may be far from the place

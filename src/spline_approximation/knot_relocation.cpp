@@ -64,7 +64,7 @@ Spline_fit relocate_and_remove(const Problem& p, const Goal& goal, Spline_fit fi
   constexpr int rounds_after_removal = 2;
   constexpr std::size_t thorough_samples = std::size_t(1) << 15;
   constexpr int thorough_rounds = 16;
-  constexpr std::size_t exchange_samples = std::size_t(1) << 17;
+  constexpr std::size_t exchange_samples = std::size_t(1) << 15;
   const double n = double(p.t.size());
   while(fit.kept.size() > (p.closed ? fewest_closed_knots : 0)) {
     const Knots old_vk = search.unwrapped(fit.kept);
@@ -129,8 +129,10 @@ Spline_fit relocate_and_remove(const Problem& p, const Goal& goal, Spline_fit fi
     // Where no removal holds, two neighbouring knots replaced by one (knot_exchange.cpp), on
     // curves of up to `exchange_samples` samples.  Measured (bench table 8, greedy): problems
     // more than 5 % over the optimum 2 -> 0 of 60 open and 3 -> 0 of 55 closed curves; table 2
-    // (max bound): 1,000 samples 29 -> 28 vertices, 100,000: 35 -> 34, at 2-4x the time; at a
-    // million samples 36 -> 34 vertices, but 1.05 -> 3.7 s, past the 1 s of that size.
+    // (max bound, CPU time): 1,000 samples 29 -> 28 vertices at 3.5x the time, 10,000 samples
+    // 34 at 1.7x.  Larger curves gained a vertex or two at about 4x (100,000 samples: 35 -> 34;
+    // a million: 36 -> 34, 1.05 -> 3.7 s, past the 1 s of that size): left out, as is the
+    // whole-relocation removal.
     if(!removed && std::size_t(p.t.size()) <= exchange_samples) removed = remove_two_add_one(p, goal, search, fit);
     if(!removed) break;
   }
