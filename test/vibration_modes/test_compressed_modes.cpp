@@ -158,9 +158,10 @@ TEST(CompressedModes, WorkingSetsReachTheWholeMeshsModes)
   // the modes that ICCM on the whole mesh reaches from the same start: the same objectives
   // and vectors (it fails if the sets leave out the earlier modes' constraints: mode 3 at
   // 407.904 against 407.935, not orthogonal).  The first-order check outside a set does not
-  // act here (the sets held the supports); the armadillo's first mode needs it (286.146
-  // without, 285.58 with).  The problem is not convex and the paths differ, so other
-  // weights may end at other local minima.
+  // act here (the sets held the supports); in an earlier version, whose sets did not grow
+  // with the support, it took the armadillo's first mode from a set's 286.146 on to 285.58.
+  // The problem is not convex and the paths differ, so other weights may end at other
+  // local minima.
   if(cgal_data_dir().empty()) GTEST_SKIP() << cgal_data_missing();
   Mesh elephant;
   ASSERT_TRUE(read_mesh(cgal_data_dir() + "/meshes/elephant.off", elephant));
