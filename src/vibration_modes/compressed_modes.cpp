@@ -166,9 +166,9 @@ Modes compressed_modes(const Mode_problem& p, int count, const Compressed_mode_o
   Model_reduction::internal::One_blas_thread one_blas_thread;
   internal::Constrained_group_lasso admm(p, mu, options.admm_tolerance);
   if(budget > 0) admm.set_l1_budget(budget);
-  // The fixed directions: the kernel (M-orthonormal) and then each mode found.
-  Eigen::MatrixXd fixed = options.orthogonal_to_kernel ? internal::m_orthonormal(p.kernel, p.mass) : Eigen::MatrixXd(p.H.rows(), 0);
-  admm.set_fixed(fixed);
+  // The fixed directions (admm.fixed()): the kernel (M-orthonormal) and then each mode found.
+  admm.set_fixed(options.orthogonal_to_kernel ? internal::m_orthonormal(p.kernel, p.mass)
+                                              : Eigen::MatrixXd(p.H.rows(), 0));
   const bool working_sets = options.working_sets && budget == 0 && mu > 0;
   const std::size_t groups = std::size_t(p.H.rows() / p.group_size);
   Modes modes;
@@ -233,7 +233,7 @@ Modes compressed_modes(const Mode_problem& p, int count, const Compressed_mode_o
         // those vertices and their two rings join it.
         const Eigen::VectorXd sparse = restricted_admm->feasible_sparse_iterate();
         const std::vector<Eigen::Index> violated = internal::violations_outside(
-            p, fixed, restricted->expand(sparse.size() > 0 ? sparse : run.c, p.H.rows()), mu, set, 1e-3);
+            p, admm.fixed(), restricted->expand(sparse.size() > 0 ? sparse : run.c, p.H.rows()), mu, set, 1e-3);
         if(violated.empty()) break;
         internal::Group_set joining(groups, 0);
         for(Eigen::Index v : violated) joining[std::size_t(v)] = 1;
@@ -251,7 +251,7 @@ Modes compressed_modes(const Mode_problem& p, int count, const Compressed_mode_o
       set.swap(next_set);
       auto next = std::make_unique<internal::Restricted_problem>(p, set);
       auto next_admm = std::make_unique<internal::Constrained_group_lasso>(next->problem, mu, options.admm_tolerance);
-      next_admm->set_fixed(internal::m_orthonormal(next->restrict(fixed), next->problem.mass));
+      next_admm->set_fixed(internal::m_orthonormal(next->restrict(admm.fixed()), next->problem.mass));
       run.c = next_admm->project_out_fixed(next->restrict(c_over_all));
       run.c /= next_admm->m_norm(run.c);
       run.f = compressed_objective(next->problem, run.c, mu);
@@ -275,8 +275,6 @@ Modes compressed_modes(const Mode_problem& p, int count, const Compressed_mode_o
                               std::to_string(mass_weighted_l1(p, c)) + ")");
     found.col(i) = c;
     admm.add_fixed(c);
-    fixed.conservativeResize(Eigen::NoChange, fixed.cols() + 1);
-    fixed.rightCols(1) = c;
     modes.energies[i] = c.dot(p.H * c);
     modes.objectives[i] = compressed_objective(p, c, mu);
     modes.l1_norms[i] = mass_weighted_l1(p, c);

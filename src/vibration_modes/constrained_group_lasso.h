@@ -36,6 +36,7 @@ public:
   /// One more fixed direction, M-unit and M-orthogonal to the others.
   void add_fixed(const Eigen::VectorXd& v);
   Eigen::VectorXd project_out_fixed(const Eigen::VectorXd& v) const;
+  /// The fixed directions (M-orthonormal columns).
   const Eigen::MatrixXd& fixed() const { return F_; }
   double m_norm(const Eigen::VectorXd& v) const;
 
