@@ -33,6 +33,9 @@ struct Reduced_group
   Eigen::MatrixXd JV;        // sampled rows x l
   Eigen::LLT<Eigen::MatrixXd> fit; // (J V)^T (J V)
   Eigen::MatrixXd F;         // U^T S_g^T diag(measure) V (unit stiffness), k x l
+  // K^-1 F fit^-1 (k x l), made with each factorisation of K: an iteration's global solve is then
+  // a k x l product per group instead of two k x k triangular solves (see Reduced_simulator step).
+  Eigen::MatrixXd solved_F;
 };
 
 struct Hyper_sampling
