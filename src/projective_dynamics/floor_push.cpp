@@ -18,29 +18,48 @@ namespace {
 
 typedef Eigen::SparseMatrix<double, Eigen::RowMajor> Sparse;
 
-// A vertex's row of U on the local columns.
-struct Local_row
+// Vertices' rows of U on the problem's columns (numbered locally), stored one after another:
+// the Newton steps pass over thousands of them many times per push (the armadillo at rest on
+// the floor: ~2,800 rows, ~22 steps), and rows in separate vectors cost a cache miss each.
+struct Local_rows
 {
-  std::vector<std::pair<int, double>> entries;
-  double dot(const Eigen::VectorXd& y) const
+  std::vector<int> start{0}, column;
+  std::vector<double> value;
+  std::size_t size() const { return start.size() - 1; }
+  double dot(std::size_t i, const Eigen::VectorXd& y) const
   {
     double s = 0;
-    for(const auto& e : entries) s += e.second * y[e.first];
+    for(int p = start[i]; p < start[i + 1]; ++p) s += value[std::size_t(p)] * y[column[std::size_t(p)]];
     return s;
   }
-  void add_outer(Eigen::MatrixXd& H, double weight) const
+  void add_outer(std::size_t i, Eigen::MatrixXd& H, double weight) const
   {
-    for(const auto& a : entries)
-      for(const auto& b : entries) H(a.first, b.first) += weight * a.second * b.second;
+    for(int p = start[i]; p < start[i + 1]; ++p)
+      for(int q = start[i]; q < start[i + 1]; ++q)
+        H(column[std::size_t(p)], column[std::size_t(q)]) += weight * value[std::size_t(p)] * value[std::size_t(q)];
   }
-  void add_to(Eigen::VectorXd& r, double weight) const
+  void add_to(std::size_t i, Eigen::VectorXd& r, double weight) const
   {
-    for(const auto& e : entries) r[e.first] += weight * e.second;
+    for(int p = start[i]; p < start[i + 1]; ++p) r[column[std::size_t(p)]] += weight * value[std::size_t(p)];
+  }
+  // Appends the row of U of vertex v on the columns numbered by `local` (-1: not a column of the
+  // problem); a column met first is numbered next when `grow`.
+  void add_row_of(const Eigen::SparseMatrix<double, Eigen::RowMajor>& U, int v, std::vector<int>& local,
+                  std::vector<int>& columns, bool grow)
+  {
+    for(Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(U, v); it; ++it)
+    {
+      if(it.value() == 0) continue;
+      int& c = local[std::size_t(it.col())];
+      if(c < 0 && grow) c = int(columns.size()), columns.push_back(int(it.col()));
+      if(c >= 0) column.push_back(c), value.push_back(it.value());
+    }
+    start.push_back(int(column.size()));
   }
 };
 
 // The multiplier loop of both pushes: minimises y^T P y subject to A_i y >= need_i and E_j y = 0.
-Eigen::VectorXd solve_push(const Eigen::MatrixXd& P, const std::vector<Local_row>& A, const std::vector<Local_row>& E,
+Eigen::VectorXd solve_push(const Eigen::MatrixXd& P, const Local_rows& A, const Local_rows& E,
                            const Eigen::VectorXd& need, double tolerance, Floor_push_report& r, Eigen::VectorXd* multipliers)
 {
   const int m = int(P.rows());
@@ -48,10 +67,8 @@ Eigen::VectorXd solve_push(const Eigen::MatrixXd& P, const std::vector<Local_row
   // Newton matrix stays well conditioned (a relative 1e-3 per augmented-Lagrangian update is
   // left of a multiplier's error; the factorization is reused while the active set repeats).
   double row_norms = 0;
-  for(const Local_row& row : A)
-    for(const auto& e : row.entries) row_norms += e.second * e.second;
-  for(const Local_row& row : E)
-    for(const auto& e : row.entries) row_norms += e.second * e.second;
+  for(double a : A.value) row_norms += a * a;
+  for(double e : E.value) row_norms += e * e;
   row_norms /= double(std::max<std::size_t>(1, A.size() + E.size()));
   const double first_rho = 1e3 * P.diagonal().mean() / std::max(row_norms, 1e-300);
   double rho = first_rho;
@@ -70,7 +87,7 @@ Eigen::VectorXd solve_push(const Eigen::MatrixXd& P, const std::vector<Local_row
   auto largest_violation = [&] {
     double worst = 0;
     for(std::size_t i = 0; i < A.size(); ++i) worst = std::max(worst, need[Eigen::Index(i)] - Ay[Eigen::Index(i)]);
-    for(const Local_row& row : E) worst = std::max(worst, std::abs(row.dot(y)));
+    for(std::size_t j = 0; j < E.size(); ++j) worst = std::max(worst, std::abs(E.dot(j, y)));
     return worst;
   };
   // Outer: multiplier updates.  Inner: semismooth Newton on the augmented Lagrangian phi, a
@@ -103,7 +120,7 @@ Eigen::VectorXd solve_push(const Eigen::MatrixXd& P, const std::vector<Local_row
           for(std::size_t i : changed)
           {
             v.setZero();
-            A[i].add_to(v, std::sqrt(rho));
+            A.add_to(i, v, std::sqrt(rho));
             newton.rankUpdate(v, active[i] ? 1.0 : -1.0);
             if(newton.info() != Eigen::Success)
             {
@@ -117,8 +134,8 @@ Eigen::VectorXd solve_push(const Eigen::MatrixXd& P, const std::vector<Local_row
         {
           Eigen::MatrixXd H = P;
           for(std::size_t i = 0; i < c; ++i)
-            if(active[i]) A[i].add_outer(H, rho);
-          for(const Local_row& row : E) row.add_outer(H, rho);
+            if(active[i]) A.add_outer(i, H, rho);
+          for(std::size_t j = 0; j < E.size(); ++j) E.add_outer(j, H, rho);
           newton.compute(H);
           ++r.factorizations;
           updates_since_factoring = 0;
@@ -127,14 +144,14 @@ Eigen::VectorXd solve_push(const Eigen::MatrixXd& P, const std::vector<Local_row
       }
       Eigen::VectorXd rhs = Eigen::VectorXd::Zero(m);
       for(std::size_t i = 0; i < c; ++i)
-        if(active[i]) A[i].add_to(rhs, rho * need[Eigen::Index(i)] + lambda[Eigen::Index(i)]);
-      for(std::size_t j = 0; j < h; ++j) E[j].add_to(rhs, -mu[Eigen::Index(j)]);
+        if(active[i]) A.add_to(i, rhs, rho * need[Eigen::Index(i)] + lambda[Eigen::Index(i)]);
+      for(std::size_t j = 0; j < h; ++j) E.add_to(j, rhs, -mu[Eigen::Index(j)]);
       const Eigen::VectorXd d = newton.solve(rhs) - y;
       // phi along y + t d, from the products at y and along d (each trial costs the rows only).
       const Eigen::VectorXd Py = P * y, Pd = P * d;
       for(std::size_t i = 0; i < c; ++i)
-        ay[Eigen::Index(i)] = need[Eigen::Index(i)] - Ay[Eigen::Index(i)] + lambda[Eigen::Index(i)] / rho, ad[Eigen::Index(i)] = A[i].dot(d);
-      for(std::size_t j = 0; j < h; ++j) ey[Eigen::Index(j)] = E[j].dot(y) + mu[Eigen::Index(j)] / rho, ed[Eigen::Index(j)] = E[j].dot(d);
+        ay[Eigen::Index(i)] = need[Eigen::Index(i)] - Ay[Eigen::Index(i)] + lambda[Eigen::Index(i)] / rho, ad[Eigen::Index(i)] = A.dot(i, d);
+      for(std::size_t j = 0; j < h; ++j) ey[Eigen::Index(j)] = E.dot(j, y) + mu[Eigen::Index(j)] / rho, ed[Eigen::Index(j)] = E.dot(j, d);
       // Only rows positive somewhere on [0, 1] enter phi there (g is linear in t).
       std::vector<Eigen::Index> touching;
       for(std::size_t i = 0; i < c; ++i)
@@ -168,7 +185,7 @@ Eigen::VectorXd solve_push(const Eigen::MatrixXd& P, const std::vector<Local_row
     }
     for(std::size_t i = 0; i < c; ++i)
       lambda[Eigen::Index(i)] = std::max(0.0, lambda[Eigen::Index(i)] + rho * (need[Eigen::Index(i)] - Ay[Eigen::Index(i)]));
-    for(std::size_t j = 0; j < h; ++j) mu[Eigen::Index(j)] += rho * E[j].dot(y);
+    for(std::size_t j = 0; j < h; ++j) mu[Eigen::Index(j)] += rho * E.dot(j, y);
     r.largest_violation = largest_violation();
     r.updates = outer + 1;
     if(r.largest_violation <= tolerance) break;
@@ -186,21 +203,6 @@ Eigen::VectorXd solve_push(const Eigen::MatrixXd& P, const std::vector<Local_row
   return y;
 }
 
-// The rows of U on the columns numbered by `local` (-1: not a column of the problem); a column
-// met first is numbered next when `grow`.
-Local_row local_row(const Sparse& U, int v, std::vector<int>& local, std::vector<int>& columns, bool grow)
-{
-  Local_row row;
-  for(Sparse::InnerIterator it(U, v); it; ++it)
-  {
-    if(it.value() == 0) continue;
-    int& c = local[std::size_t(it.col())];
-    if(c < 0 && grow) c = int(columns.size()), columns.push_back(int(it.col()));
-    if(c >= 0) row.entries.emplace_back(c, it.value());
-  }
-  return row;
-}
-
 } // namespace
 
 Eigen::VectorXd smallest_floor_push(const Sparse& U, const Eigen::MatrixXd& Mr_inverse, const std::vector<int>& rows,
@@ -210,9 +212,9 @@ Eigen::VectorXd smallest_floor_push(const Sparse& U, const Eigen::MatrixXd& Mr_i
   const int k = int(U.cols());
   // The columns the rows touch, numbered locally.
   std::vector<int> local(std::size_t(k), -1), columns;
-  std::vector<Local_row> A, E;
-  for(int v : rows) A.push_back(local_row(U, v, local, columns, true));
-  for(int v : held) E.push_back(local_row(U, v, local, columns, true));
+  Local_rows A, E;
+  for(int v : rows) A.add_row_of(U, v, local, columns, true);
+  for(int v : held) E.add_row_of(U, v, local, columns, true);
   const int m = int(columns.size());
   Floor_push_report r;
   r.columns = m, r.constraints = int(rows.size());
@@ -229,26 +231,31 @@ Eigen::VectorXd smallest_floor_push(const Sparse& U, const Eigen::MatrixXd& Mr_i
   return delta;
 }
 
+Push_subspace push_subspace(const Sparse& U, const Eigen::MatrixXd& Mr, const std::vector<int>& push_columns)
+{
+  Push_subspace p;
+  p.columns = push_columns;
+  std::vector<int> local(std::size_t(U.cols()), -1);
+  for(std::size_t a = 0; a < push_columns.size(); ++a) local[std::size_t(push_columns[a])] = int(a);
+  std::vector<Eigen::Triplet<double>> entries;
+  for(Eigen::Index v = 0; v < U.rows(); ++v)
+    for(Sparse::InnerIterator it(U, v); it; ++it)
+      if(local[std::size_t(it.col())] >= 0) entries.emplace_back(int(v), local[std::size_t(it.col())], it.value());
+  p.U.resize(U.rows(), Eigen::Index(push_columns.size()));
+  p.U.setFromTriplets(entries.begin(), entries.end());
+  const Eigen::MatrixXd M = Mr(push_columns, push_columns);
+  p.Mr_inverse = M.llt().solve(Eigen::MatrixXd::Identity(M.rows(), M.cols()));
+  return p;
+}
+
 Eigen::VectorXd smallest_floor_push_in(const Sparse& U, const Eigen::MatrixXd& Mr, const std::vector<int>& push_columns,
                                        const std::vector<int>& rows, const Eigen::VectorXd& need, const std::vector<int>& held,
                                        double tolerance, Floor_push_report* report, Eigen::VectorXd* multipliers)
 {
-  const int k = int(U.cols()), m = int(push_columns.size());
-  std::vector<int> local(std::size_t(k), -1), columns = push_columns;
-  for(int a = 0; a < m; ++a) local[std::size_t(push_columns[std::size_t(a)])] = a;
-  std::vector<Local_row> A, E;
-  for(int v : rows) A.push_back(local_row(U, v, local, columns, false));
-  for(int v : held) E.push_back(local_row(U, v, local, columns, false));
-  Floor_push_report r;
-  r.columns = m, r.constraints = int(rows.size());
-  Eigen::VectorXd delta = Eigen::VectorXd::Zero(k);
-  if(m > 0)
-  {
-    const Eigen::MatrixXd P = Mr(push_columns, push_columns);
-    const Eigen::VectorXd y = solve_push(P, A, E, need, tolerance, r, multipliers);
-    for(int a = 0; a < m; ++a) delta[push_columns[std::size_t(a)]] = y[a];
-  }
-  if(report) *report = r;
+  const Push_subspace p = push_subspace(U, Mr, push_columns);
+  const Eigen::VectorXd pushed = smallest_floor_push(p.U, p.Mr_inverse, rows, need, held, tolerance, report, multipliers);
+  Eigen::VectorXd delta = Eigen::VectorXd::Zero(U.cols());
+  for(std::size_t a = 0; a < push_columns.size(); ++a) delta[push_columns[a]] = pushed[Eigen::Index(a)];
   return delta;
 }
 

@@ -91,6 +91,9 @@ struct Reduced_simulator::Impl : internal::Scene_handles
   // make the push's problem).  Made at the first push (O(k^3)): a scene without a floor, or with
   // the samples' basis, never pays for it.
   Eigen::MatrixXd Mr_inverse;
+  // The samples' translations' rows of U and Mr's inverse on them, for the pushes with the
+  // samples' basis (made at the first push).
+  internal::Push_subspace translation_push;
   // The last push's multipliers (per floor, per collision vertex), to start the next.
   std::vector<std::vector<double>> floor_multipliers;
   Eigen::VectorXd gvec; // U^T m
@@ -142,6 +145,7 @@ struct Reduced_simulator::Impl : internal::Scene_handles
       throw Numerical_failure("U^T M U is not positive definite: the basis has dependent columns on the massive vertices "
                               "(a sample's support too small or flat: fewer samples or a larger radius multiplier)");
     Mr_inverse.resize(0, 0); // of the masses before
+    translation_push = internal::Push_subspace();
     gvec = Ut * m;
     a = rest_coordinates ? *rest_coordinates : Eigen::MatrixXd(Mr_llt.solve(Ut * m.asDiagonal() * model.rest_positions()));
     if(!rest_coordinates)
@@ -384,12 +388,16 @@ struct Reduced_simulator::Impl : internal::Scene_handles
     timings.contact_vertices = timings.contact_columns = timings.contact_factorizations = 0;
     if(floors.empty() || collision.empty()) return;
     // A basis made from samples pushes by their translations (columns 4 j + 3); another basis by
-    // all its columns near the contact (Mr's inverse, made once).
-    std::vector<int> translations;
-    if(!samples.empty() && k() == 4 * int(samples.size()))
+    // all its columns near the contact (Mr's inverse).  Either made once.
+    const bool by_translations = !samples.empty() && k() == 4 * int(samples.size());
+    if(by_translations && translation_push.columns.empty())
+    {
+      std::vector<int> translations;
       for(int j = 0; j < int(samples.size()); ++j) translations.push_back(4 * j + 3);
-    else if(Mr_inverse.rows() != k())
-      Mr_inverse = Mr_llt.solve(Eigen::MatrixXd::Identity(k(), k()));
+      translation_push = internal::push_subspace(U, Mr, translations);
+    }
+    if(!by_translations && Mr_inverse.rows() != k()) Mr_inverse = Mr_llt.solve(Eigen::MatrixXd::Identity(k(), k()));
+    const Sparse& push_U = by_translations ? translation_push.U : U;
     std::vector<int> held = pinned;
     held.insert(held.end(), grabbed.begin(), grabbed.end());
     std::sort(held.begin(), held.end());
@@ -433,18 +441,19 @@ struct Reduced_simulator::Impl : internal::Scene_handles
           internal::Floor_push_report report;
           Eigen::VectorXd start(Eigen::Index(rows.size()));
           for(std::size_t i = 0; i < rows.size(); ++i) start[Eigen::Index(i)] = multiplier[std::size_t(rows[i])];
-          delta = translations.empty()
-                    ? internal::smallest_floor_push(U, Mr_inverse, vertices, need, held, tolerance, &report, &start)
-                    : internal::smallest_floor_push_in(U, Mr, translations, vertices, need, held, tolerance, &report, &start);
+          delta = internal::smallest_floor_push(push_U, by_translations ? translation_push.Mr_inverse : Mr_inverse, vertices,
+                                                need, held, tolerance, &report, &start);
           std::fill(multiplier.begin(), multiplier.end(), 0.0);
           for(std::size_t i = 0; i < rows.size(); ++i) multiplier[std::size_t(rows[i])] = start[Eigen::Index(i)];
           timings.contact_vertices = report.constraints, timings.contact_columns = report.columns;
           timings.contact_factorizations += report.factorizations;
           Eigen::VectorXd lifted(Eigen::Index(collision.size()));
-          for(std::size_t q = 0; q < collision.size(); ++q) lifted[Eigen::Index(q)] = height[Eigen::Index(q)] + U.row(collision[q]).dot(delta);
+          for(std::size_t q = 0; q < collision.size(); ++q) lifted[Eigen::Index(q)] = height[Eigen::Index(q)] + push_U.row(collision[q]).dot(delta);
           if(!add_below(lifted)) break;
         }
-        x += delta * f.normal.transpose();
+        if(by_translations)
+          for(std::size_t a = 0; a < translation_push.columns.size(); ++a) x.row(translation_push.columns[a]) += delta[Eigen::Index(a)] * f.normal.transpose();
+        else x += delta * f.normal.transpose();
       }
       if(!moved) break;
     }
