@@ -82,7 +82,9 @@ void add_mode_options(Command_line& command, Mode_use use)
     ("mu-scale", po::value<double>()->default_value(use == Mode_use::segmentation ? 2.5 : 4.0)->value_name("S"),
      "mu = S lambda_K / sqrt(area): the weight relative to the K-th ordinary mode's eigenvalue")
     ("l1-budget", po::value<double>()->value_name("B"),
-     "instead of mu: each mode minimises u^T H u with |u|_{1,M} <= B sqrt(area) (B in (0, 1]; 1 gives the ordinary modes)");
+     "instead of mu: each mode minimises u^T H u with |u|_{1,M} <= B sqrt(area) (B in (0, 1]; 1 gives the ordinary modes)")
+    ("iccm-iterations", po::value<int>()->default_value(200)->value_name("N"),
+     "at most N ICCM (outer) iterations per compressed mode; a mode stopped there is reported");
   command.group("modes file").add_options()
     ("save", po::value<std::string>()->value_name("FILE.vmb"),
      "save the modes with the mesh's identity, pins and stiffnesses (for --load)")
@@ -126,6 +128,23 @@ std::vector<int> pinned_vertices(const Command_line& command, const Mode_mesh& m
   return pinned;
 }
 
+// Names the compressed modes whose ICCM stopped at its iteration limit.
+static void warn_unconverged(const VM::Modes& modes)
+{
+  std::string list;
+  int count = 0, limit = 0;
+  for(std::size_t i = 0; i < modes.converged.size(); ++i)
+    if(!modes.converged[i])
+    {
+      list += (count++ ? ", " : "") + std::to_string(i + 1);
+      limit = std::max(limit, modes.outer_iterations[i]);
+    }
+  if(count > 0)
+    warn(std::string(count == 1 ? "mode " : "modes ") + list + " stopped at the limit of " + std::to_string(limit) +
+         " ICCM iterations before meeting the stopping rule: feasible, but the objective may still fall "
+         "(raise '--iccm-iterations')");
+}
+
 Tool_modes obtain_modes(const Command_line& command, Mode_use use, const Tool_mesh& mesh, const Mode_mesh& arrays,
                         const std::vector<int>& pinned, bool need_problem)
 {
@@ -151,6 +170,7 @@ Tool_modes obtain_modes(const Command_line& command, Mode_use use, const Tool_me
     result.loaded = true;
     say("loaded %ld %s modes from %s\n", long(result.modes.vectors.cols()),
         result.modes.objectives.size() > 0 ? "compressed" : "ordinary", path.c_str());
+    warn_unconverged(result.modes);
     if(need_problem) result.problem = make_problem();
     return result;
   }
@@ -177,6 +197,8 @@ Tool_modes obtain_modes(const Command_line& command, Mode_use use, const Tool_me
     if(!(mu >= 0) || !std::isfinite(mu)) throw Usage_error("the sparsity weight mu must be finite and >= 0");
     VM::Compressed_mode_options options;
     options.sparsity_weight = mu;
+    options.max_outer_iterations = command.get<int>("iccm-iterations");
+    if(options.max_outer_iterations < 1) throw Usage_error("'--iccm-iterations' must be at least 1");
     // Compressed manifold modes (bumps on parts) need the constants; shells stay orthogonal
     // to their rigid motions.
     options.orthogonal_to_kernel = !(scalar && (use == Mode_use::segmentation || command.has("with-constants")));
@@ -208,6 +230,7 @@ Tool_modes obtain_modes(const Command_line& command, Mode_use use, const Tool_me
     for(int i = 0; i < k; ++i)
       say("| %d | %.6g | %.6g | %.1f %% | %d | %d |\n", i + 1, r.objectives[i], r.energies[i],
           100 * r.support_fractions[i], r.outer_iterations[std::size_t(i)], r.inner_iterations[std::size_t(i)]);
+    warn_unconverged(r);
   }
   else
   {

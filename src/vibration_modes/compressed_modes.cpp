@@ -281,6 +281,7 @@ Modes compressed_modes(const Mode_problem& p, int count, const Compressed_mode_o
     modes.support_fractions[i] = support_fraction(p, c);
     modes.outer_iterations.push_back(run.outer);
     modes.inner_iterations.push_back(run.inner);
+    modes.converged.push_back(run.done ? 1 : 0);
   }
   modes.vectors = p.expand(found);
   return modes;

@@ -18,7 +18,7 @@ namespace {
 namespace MRI = Model_reduction::internal;
 
 const char file_magic[8] = {'V', 'I', 'B', 'M', 'O', 'D', 'E', 'S'};
-const std::uint32_t file_version = 1;
+const std::uint32_t file_version = 2; // 2: the compressed modes' convergence flags
 const char* const what = "vibration modes";
 
 void write_vector(std::ostream& out, const Eigen::VectorXd& v) { MRI::write_matrix(out, v); }
@@ -74,6 +74,7 @@ void save_modes(const std::string& path, const Modes& m, const Mode_settings& s,
     write_vector(out, *v);
   write_ints(out, m.outer_iterations);
   write_ints(out, m.inner_iterations);
+  write_ints(out, m.converged);
   MRI::write_value(out, file_magic);
   if(!out) throw Invalid_input("writing the vibration modes to '" + path + "' failed");
 }
@@ -139,6 +140,9 @@ Modes load_modes(const std::string& path, const Eigen::VectorXd& positions,
   m.support_fractions = vector("support fractions", true);
   m.outer_iterations = read_ints(r, std::uint64_t(count), "outer iterations");
   m.inner_iterations = read_ints(r, std::uint64_t(count), "inner iterations");
+  m.converged = read_ints(r, std::uint64_t(count), "convergence flags");
+  for(int c : m.converged)
+    if(c != 0 && c != 1) r.fail("a convergence flag is corrupt");
   r.expect_magic(file_magic, "the file is corrupt (no end marker)");
   if(!m.vectors.allFinite() || !m.energies.allFinite() || !m.residuals.allFinite() || !m.objectives.allFinite() ||
      !m.l1_norms.allFinite() || !m.support_fractions.allFinite() || !std::isfinite(m.sparsity_weight))

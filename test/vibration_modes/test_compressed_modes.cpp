@@ -151,6 +151,24 @@ TEST(CompressedModes, SatisfyTheFirstOrderOptimalityConditions)
   expect_first_order_conditions(p, VM::compressed_modes(p, 3, options), options.sparsity_weight);
 }
 
+TEST(CompressedModes, AModeStoppedAtTheIterationLimitIsFlagged)
+{
+  // One ICCM iteration does not reach the optimum: the first mode's objective stays above the
+  // converged one's, and the flags say which is which.
+  const VM::Mode_problem p = shell_problem(lumpy_sphere(1));
+  const VM::Modes ordinary = VM::lowest_vibration_modes(p, 2);
+  VM::Compressed_mode_options options;
+  options.sparsity_weight = 8 * typical_mu(p, ordinary, 2);
+  options.ordinary_modes = &ordinary;
+  const VM::Modes converged = VM::compressed_modes(p, 2, options);
+  options.max_outer_iterations = 1;
+  const VM::Modes stopped = VM::compressed_modes(p, 2, options);
+  EXPECT_EQ(converged.converged, (std::vector<int>{1, 1}));
+  EXPECT_EQ(stopped.converged, (std::vector<int>{0, 0}));
+  EXPECT_EQ(stopped.outer_iterations, (std::vector<int>{1, 1}));
+  EXPECT_GT(stopped.objectives[0], converged.objectives[0] * (1 + 1e-3));
+}
+
 TEST(CompressedModes, WorkingSetsReachTheWholeMeshsModes)
 {
   // Local modes of the elephant (2,775 vertices, CGAL's data): ICCM moves to working sets

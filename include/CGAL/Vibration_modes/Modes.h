@@ -39,6 +39,10 @@ struct Modes
   double sparsity_weight = 0;
   Eigen::VectorXd objectives, l1_norms, support_fractions;
   std::vector<int> outer_iterations, inner_iterations;
+  /// Compressed modes: 1 where ICCM met its stopping rule, 0 where it stopped at
+  /// `Compressed_mode_options::max_outer_iterations` (the mode is the last iterate: feasible,
+  /// but its objective may still fall).
+  std::vector<int> converged;
 };
 
 } // namespace Vibration_modes
