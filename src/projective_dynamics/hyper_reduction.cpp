@@ -6,6 +6,7 @@
 
 #include <CGAL/Projective_dynamics/Projection_subspace.h>
 #include <CGAL/Projective_dynamics/errors.h>
+#include <CGAL/Projective_dynamics/internal/projection_subspace_factors.h>
 
 #include "element_graph.h"
 #include "hyper_reduction.h"
@@ -44,8 +45,9 @@ Hyper_sampling sample_and_fit(const Elastic_model& model, const Reduction_option
     if(int(mine.size()) < l + 20)
       throw Invalid_input("element group " + std::to_string(g) + " has " + std::to_string(mine.size()) +
                           " elements, fewer than l + 20 = " + std::to_string(l + 20) + " (too few to fit l projection columns)");
-    const Eigen::MatrixXd V =
-        projection_subspace(model, int(g), r.constraint_samples, r.constraint_radius_multiplier, l);
+    // V in factored form: the fit needs its sampled rows, F = U^T S^T D V its product with S.
+    const Projection_subspace_factors V =
+        projection_subspace_factors(model, int(g), r.constraint_samples, r.constraint_radius_multiplier, l);
     // One element at each farthest-point vertex (the first of this group there not taken yet);
     // if the vertices run out, evenly spaced elements of the rest.
     const int s = std::min(r.sampled_elements, int(mine.size()));
@@ -70,11 +72,8 @@ Hyper_sampling sample_and_fit(const Elastic_model& model, const Reduction_option
     std::vector<int> local_rows;
     for(int e : G.sampled)
       for(int q = 0; q < elements[std::size_t(e)].rows; ++q) local_rows.push_back(elements[std::size_t(e)].first_row + q - G.first_row);
-    G.JV.resize(Eigen::Index(local_rows.size()), l);
-    for(std::size_t q = 0; q < local_rows.size(); ++q) G.JV.row(Eigen::Index(q)) = V.row(local_rows[q]);
-    const Sparse Sg = S.middleRows(G.first_row, G.rows);
-    const Eigen::MatrixXd T = Sparse(Sg.transpose()) * (G.measure.asDiagonal() * V);
-    G.F = Ut * T;
+    G.JV = V.rows_of_V(local_rows);
+    G.F = V.projected(S.middleRows(G.first_row, G.rows), Ut);
   }
   Hyper_sampling h = finish_sampling(model, U, groups);
   if(report) report("projection subspaces", 1);

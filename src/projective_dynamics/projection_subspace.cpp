@@ -6,6 +6,7 @@
 #include <CGAL/Projective_dynamics/Position_subspace.h>
 #include <CGAL/Projective_dynamics/Projection_subspace.h>
 #include <CGAL/Projective_dynamics/errors.h>
+#include <CGAL/Projective_dynamics/internal/projection_subspace_factors.h>
 
 #include "element_graph.h"
 
@@ -50,8 +51,10 @@ Eigen::MatrixXd mass_weighted_pca(const Eigen::MatrixXd& C, const Eigen::VectorX
   return C * E;
 }
 
-Eigen::MatrixXd projection_subspace(const Elastic_model& model, int group, int constraint_samples, double radius_multiplier,
-                                    int l)
+namespace internal {
+
+internal::Projection_subspace_factors projection_subspace_factors(const Elastic_model& model, int group, int constraint_samples,
+                                                                  double radius_multiplier, int l)
 {
   if(group < 0 || group >= model.number_of_groups()) throw Invalid_input("unknown element group " + std::to_string(group));
   if(!(radius_multiplier > 1) || !std::isfinite(radius_multiplier))
@@ -124,23 +127,78 @@ Eigen::MatrixXd projection_subspace(const Elastic_model& model, int group, int c
   // The scaled candidates B = D^{1/2} C without the span of Q: B' = B - Q Q^T B, never formed
   // densely (rows x 4m): its Gram matrix is B^T B - (Q^T B)^T (Q^T B), and its leading columns
   // are B E - Q (Q^T B E).
-  Eigen::SparseMatrix<double> B(rows, 4 * m);
-  B.setFromTriplets(candidates.begin(), candidates.end());
-  B = root.asDiagonal() * B;
-  const Eigen::MatrixXd QtB = (Eigen::SparseMatrix<double>(B.transpose()) * Q).transpose(); // z x 4m
-  const Eigen::MatrixXd G = Eigen::MatrixXd(Eigen::SparseMatrix<double>(B.transpose()) * B) - QtB.transpose() * QtB;
+  Projection_subspace_factors f;
+  f.B.resize(rows, 4 * m);
+  f.B.setFromTriplets(candidates.begin(), candidates.end());
+  f.B = root.asDiagonal() * f.B;
+  const Eigen::MatrixXd QtB = (Eigen::SparseMatrix<double>(f.B.transpose()) * Q).transpose(); // z x 4m
+  // B^T B accumulated densely row by row (4m x 4m is small; a sparse product of B^T and B took
+  // 2.3 s of a 6 s precomputation on a 68,666-tet armadillo).
+  Eigen::MatrixXd G = Eigen::MatrixXd::Zero(4 * m, 4 * m);
+  for(Eigen::Index r = 0; r < f.B.rows(); ++r)
+    for(Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator a(f.B, r); a; ++a)
+      for(Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator b(f.B, r); b; ++b) G(a.col(), b.col()) += a.value() * b.value();
+  G -= QtB.transpose() * QtB;
   if(l - z > 4 * m)
     throw Invalid_input("l = " + std::to_string(l) + " exceeds the " + std::to_string(4 * m) + " candidate columns");
-  Eigen::MatrixXd V(rows, l);
-  const Eigen::VectorXd inverse_root = root.cwiseInverse();
-  V.leftCols(z) = inverse_root.asDiagonal() * Q;
+  f.inverse_root = root.cwiseInverse();
+  f.Q = Q;
+  f.A = Eigen::MatrixXd::Zero(z, l);
+  f.A.leftCols(z).setIdentity();
+  f.E = Eigen::MatrixXd::Zero(4 * m, l);
   if(l > z)
   {
-    const Eigen::MatrixXd E = leading_coefficients(G, l - z);
-    const Eigen::MatrixXd BE = B * E;
-    V.rightCols(l - z) = inverse_root.asDiagonal() * (BE - Q * (QtB * E));
+    f.E.rightCols(l - z) = leading_coefficients(G, l - z);
+    f.A.rightCols(l - z) = -QtB * f.E.rightCols(l - z);
   }
-  return V;
+  return f;
+}
+
+Eigen::MatrixXd Projection_subspace_factors::rows_of_V(const std::vector<int>& rows) const
+{
+  Eigen::MatrixXd out(Eigen::Index(rows.size()), A.cols());
+  for(std::size_t q = 0; q < rows.size(); ++q)
+  {
+    const int r = rows[q];
+    Eigen::RowVectorXd v = Q.row(r) * A;
+    for(Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(B, r); it; ++it) v += it.value() * E.row(it.col());
+    out.row(Eigen::Index(q)) = inverse_root[r] * v;
+  }
+  return out;
+}
+
+Eigen::MatrixXd Projection_subspace_factors::V() const
+{
+  return inverse_root.asDiagonal() * (Q * A + B * E);
+}
+
+Eigen::MatrixXd Projection_subspace_factors::projected(const Eigen::SparseMatrix<double, Eigen::RowMajor>& Sg,
+                                                       const Eigen::SparseMatrix<double, Eigen::RowMajor>& Ut) const
+{
+  // U^T S^T D V = U^T S^T D^{1/2} (Q A + B E) = P_Q A + P_B E with [P_Q P_B] = U^T Y and
+  // Y = S^T D^{1/2} [Q B] (vertices x (z + 4m), dense: a few tens of MB), made row by row of S.
+  const Eigen::Index z = Q.cols(), c = B.cols();
+  Eigen::MatrixXd Y = Eigen::MatrixXd::Zero(Sg.cols(), z + c);
+  for(Eigen::Index r = 0; r < Sg.rows(); ++r)
+  {
+    const double root = 1 / inverse_root[r];
+    for(Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator s(Sg, r); s; ++s)
+    {
+      const double w = s.value() * root;
+      Y.row(s.col()).head(z) += w * Q.row(r);
+      for(Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator b(B, r); b; ++b) Y(s.col(), z + b.col()) += w * b.value();
+    }
+  }
+  const Eigen::MatrixXd P = Ut * Y;
+  return P.leftCols(z) * A + P.rightCols(c) * E;
+}
+
+} // namespace internal
+
+Eigen::MatrixXd projection_subspace(const Elastic_model& model, int group, int constraint_samples, double radius_multiplier,
+                                    int l)
+{
+  return internal::projection_subspace_factors(model, group, constraint_samples, radius_multiplier, l).V();
 }
 
 } // namespace Projective_dynamics

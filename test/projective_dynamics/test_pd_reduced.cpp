@@ -18,6 +18,7 @@
 #include <CGAL/Projective_dynamics/Projection_subspace.h>
 #include <CGAL/Projective_dynamics/Reduced_simulator.h>
 #include <CGAL/Projective_dynamics/Simulator.h>
+#include <CGAL/Projective_dynamics/internal/projection_subspace_factors.h>
 #include <CGAL/Projective_dynamics/make_models.h>
 #include <CGAL/Projective_dynamics/mesh_generators.h>
 
@@ -129,6 +130,48 @@ TEST(ProjectiveDynamicsReduced, PcaKeepsTheLeadingEigenvectors)
   EXPECT_NEAR((leading.transpose() * Vs).squaredNorm(), double(l), 1e-8);
   EXPECT_THROW_REASON(PD::mass_weighted_pca(C.leftCols(3) * Eigen::MatrixXd::Ones(3, 10), w, 5), PD::Invalid_input,
                       "numerical rank");
+}
+
+TEST(ProjectiveDynamicsReduced, ProjectionSubspaceHoldsTheRestProjectionsAndItsFactorsAgree)
+{
+  // The box's tets (one group): V is orthonormal for the element measures, its span holds the
+  // rest projections (recomputed here element by element), and the factored form the simulator
+  // uses gives V's rows and F = U^T S^T D V as the dense products done here.
+  const PD::Elastic_model model = box_model();
+  const int l = 40;
+  const Eigen::MatrixXd V = PD::projection_subspace(model, 0, 20, 2.2, l);
+  const auto& S = model.selection_matrix();
+  ASSERT_EQ(V.rows(), S.rows());
+  Eigen::VectorXd measure(S.rows());
+  Eigen::MatrixXd P(S.rows(), 3);
+  for(int e = 0; e < model.number_of_elements(); ++e)
+  {
+    const PD::Element& el = model.elements()[std::size_t(e)];
+    double value[9], out[9];
+    for(int r = 0; r < el.rows; ++r)
+    {
+      const Eigen::RowVector3d v = S.row(el.first_row + r) * model.rest_positions();
+      for(int c = 0; c < 3; ++c) value[3 * r + c] = v[c];
+      measure[el.first_row + r] = el.measure;
+    }
+    model.project(e, value, out);
+    for(int r = 0; r < el.rows; ++r)
+      for(int c = 0; c < 3; ++c) P(el.first_row + r, c) = out[3 * r + c];
+  }
+  // Rounding of O(1) eigen-decompositions and QR over ~2,000 rows.
+  EXPECT_LT((V.transpose() * measure.asDiagonal() * V - Eigen::MatrixXd::Identity(l, l)).cwiseAbs().maxCoeff(), 1e-9);
+  const Eigen::MatrixXd coefficients = V.transpose() * measure.asDiagonal() * P; // D-orthogonal projection onto V
+  EXPECT_LT((V * coefficients - P).norm(), 1e-10 * P.norm());
+
+  const PD::internal::Projection_subspace_factors f = PD::internal::projection_subspace_factors(model, 0, 20, 2.2, l);
+  const std::vector<int> rows = {0, 7, 100, int(S.rows()) - 1};
+  const Eigen::MatrixXd some = f.rows_of_V(rows);
+  for(std::size_t q = 0; q < rows.size(); ++q)
+    EXPECT_LT((some.row(Eigen::Index(q)) - V.row(rows[q])).norm(), 1e-12 * V.norm()) << "row " << rows[q];
+  const PD::Position_subspace U = PD::make_position_subspace(model, 10);
+  const Eigen::SparseMatrix<double, Eigen::RowMajor> Ut = U.basis.transpose();
+  const Eigen::MatrixXd F = Eigen::MatrixXd(U.basis).transpose() * Eigen::MatrixXd(S).transpose() * measure.asDiagonal() * V;
+  EXPECT_LT((f.projected(S, Ut) - F).norm(), 1e-12 * F.norm());
 }
 
 TEST(ProjectiveDynamicsReduced, RestStateStaysAtRest)
