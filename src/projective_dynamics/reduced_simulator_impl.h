@@ -418,17 +418,21 @@ struct Reduced_simulator::Impl : internal::Scene_handles
         Eigen::VectorXd height(Eigen::Index(collision.size()));
         for(std::size_t q = 0; q < collision.size(); ++q) height[Eigen::Index(q)] = U.row(collision[q]).dot(normal_coordinates) - offset;
         std::vector<int> rows, in_problem(collision.size(), 0);
-        auto add_below = [&](const Eigen::VectorXd& h) {
+        auto add_below = [&](const Eigen::VectorXd& h, bool held_last_step_only) {
           bool added = false;
           for(std::size_t q = 0; q < collision.size(); ++q)
-            if(h[Eigen::Index(q)] < 0 && !in_problem[q])
+            if(h[Eigen::Index(q)] < 0 && !in_problem[q] && (!held_last_step_only || multiplier[q] > 0))
             {
               // Only the vertices outside the pushed set need a test: the others already hold.
               in_problem[q] = 1, rows.push_back(int(q)), added = true;
             }
           return added;
         };
-        if(!add_below(height)) continue;
+        // A resting body: the problem starts from the vertices below the floor that held it last
+        // step (positive multipliers); the others below join only if the push leaves them below
+        // (an optimum over some constraints that meets the others is the optimum over all).  The
+        // authors' armadillo at rest: a few hundred rows instead of ~5,000.  A new contact: all.
+        if(!add_below(height, true) && !add_below(height, false)) continue;
         moved = true;
         // Lifted to twice the tolerance, solved to the tolerance: every vertex ends above.
         Eigen::VectorXd delta;
@@ -449,7 +453,7 @@ struct Reduced_simulator::Impl : internal::Scene_handles
           timings.contact_factorizations += report.factorizations;
           Eigen::VectorXd lifted(Eigen::Index(collision.size()));
           for(std::size_t q = 0; q < collision.size(); ++q) lifted[Eigen::Index(q)] = height[Eigen::Index(q)] + push_U.row(collision[q]).dot(delta);
-          if(!add_below(lifted)) break;
+          if(!add_below(lifted, false)) break;
         }
         if(by_translations)
           for(std::size_t a = 0; a < translation_push.columns.size(); ++a) x.row(translation_push.columns[a]) += delta[Eigen::Index(a)] * f.normal.transpose();
