@@ -136,8 +136,18 @@ class Degree_one_search
 public:
   Degree_one_search(const Problem& p)
     : p_(p), P_(*p.samples), D_(P_.cols()), n_(p.t.size()), m_(p.candidates.size()), closed_(p.closed),
-      blocks_(p.t, P_)
+      blocks_(p.t, P_), tie_unit_(squared_error_tie * squared_spread(P_))
   {}
+
+  // Squared errors over `samples` samples closer than this are a tie (spline_numerics.h): the
+  // choice among them goes by index, so that a moved or scaled copy chooses alike.
+  double tie(Index samples) const { return tie_unit_ * double(std::max<Index>(samples, 1)); }
+  // The samples of the spans from vertex v0 to vertex v1 (those that exist).
+  Index samples_between(const Knots& vk, Index v0, Index v1) const
+  {
+    if(!closed_) v0 = std::max<Index>(v0, -1), v1 = std::min<Index>(v1, Index(vk.size()));
+    return first_at(node(vk, v1)) - first_at(node(vk, v0));
+  }
 
   Knots unwrapped(const std::vector<std::size_t>& kept) const { return Knots(kept.begin(), kept.end()); }
   // Back to increasing indices in [0, m), the vertices' rows turned with them.
@@ -258,6 +268,9 @@ public:
       const Index c_end = !closed_ && v + 1 == K ? m_ : knot_candidate(vk, v + 1);
       double best = std::numeric_limits<double>::infinity(), here = best;
       Index best_c = current;
+      // A candidate wins only by more than a tie: among tied ones the first tried, an order
+      // fixed by the candidates' indices (the current one's included, it is tried in turn).
+      const double tol = tie(samples_between(vk, v - 2, v + 2));
       // Evaluates the candidates lo, lo + stride, ... below hi, and the current one, from the
       // moments `from` (the samples before `from.j` moved left: valid for candidates from
       // `from.c` on).  Keeps, for the next level, the moments at the evaluated place before the best.
@@ -280,7 +293,7 @@ public:
           set_span_quadratic(w.spans[s2 + 1], at.right, b - u, false);
           const double e = w.minimum(&solution);
           if(c == current) here = e;
-          if(e < best) {
+          if(e < best - tol) {
             best = e;
             best_c = c;
             best_solution = solution;
@@ -305,8 +318,9 @@ public:
         from = before_best;
         lo = std::max(lo, from.c); // its moments hold for candidates from its own on
       }
-      // Move only for a gain beyond rounding (the window's sums carry relative error ~1e-13).
-      if(best_c != current && std::isfinite(best) && !(best >= here - 1e-12 * std::abs(here))) {
+      // Move only for a gain beyond a tie (the window's sums carry relative error ~1e-13, of
+      // the samples' spread on centred data, not of the window's own error).
+      if(best_c != current && std::isfinite(best) && !(best >= here - tol)) {
         vk[std::size_t(k)] += best_c - current;
         for(Eigen::Index f = 0; f < 3; ++f) X.row(row(vk, v - 1 + f)) = best_solution.row(f);
         moved = true;
@@ -379,6 +393,7 @@ private:
   Index n_, m_;
   bool closed_;
   Block_moments blocks_;
+  double tie_unit_;
 };
 
 // Sweeps and refits until the squared error falls by less than 1e-3 relative or after `rounds`

@@ -139,23 +139,24 @@ public:
         Index smallest = hi - s_.knot_candidate(vk, b - 1);
         for(Index v = a; v < b; ++v) smallest = std::min(smallest, s_.knot_candidate(vk, v) - (v == a ? lo : s_.knot_candidate(vk, v - 1)));
         double here = chain_minimum(vk, X, a - 1, b, nullptr);
+        const double tol = s_.tie(s_.samples_between(vk, a - 2, b + 1)); // the chain's spans
         const Index finest = std::max<Index>(1, smallest / 32);
         for(Index step = std::max<Index>(1, smallest / 4); step >= finest;) {
           double best = here;
           Index best_shift = 0;
-          for(Index shift : {-step, step}) {
+          for(Index shift : {-step, step}) { // a tie goes to the shift down
             if(s_.knot_candidate(vk, a) + shift <= lo || s_.knot_candidate(vk, b - 1) + shift >= hi) continue;
             shift_run(vk, a, b, shift);
             const double e = chain_minimum(vk, X, a - 1, b, &solution);
             shift_run(vk, a, b, -shift);
-            if(e < best) {
+            if(e < best - tol) {
               best = e;
               best_shift = shift;
               best_solution = solution;
             }
           }
-          // Only for a gain beyond rounding, as in the sweep.
-          if(best_shift != 0 && std::isfinite(best) && !(best >= here - 1e-12 * std::abs(here))) {
+          // Only for a gain beyond a tie, as in the sweep.
+          if(best_shift != 0 && std::isfinite(best) && !(best >= here - tol)) {
             shift_run(vk, a, b, best_shift);
             for(Index v = a - 1; v <= b; ++v) X.row(s_.row(vk, v)) = best_solution.row(v - (a - 1));
             here = best;
@@ -273,6 +274,7 @@ struct Insertion
 {
   double gain = -std::numeric_limits<double>::infinity(); // squared error removed
   Index added = 0;                                         // its candidate
+  Index samples = 0;                                       // those of the spans the gain covers
 };
 
 std::vector<Insertion> insertions(const Degree_one_search& search, const Exchange_search& x, const Knots& vk,
@@ -293,7 +295,7 @@ std::vector<Insertion> insertions(const Degree_one_search& search, const Exchang
     search.sweep(with, X_with, q, q + 1);
     const double after = x.chain_minimum(with, X_with, q - 1, q + 1, nullptr);
     best[std::size_t(v - first_span)] = {x.chain_minimum(vk, X, v, v + 1, nullptr) - after,
-                                         search.knot_candidate(with, q)};
+                                         search.knot_candidate(with, q), search.samples_between(vk, v - 1, v + 2)};
   }
   return best;
 }
@@ -304,6 +306,7 @@ struct Exchange
 {
   Index i, added;
   double estimate; // the squared error added, on a model with only the new knot placed
+  Index samples;   // those of the spans the estimate covers (for its tie tolerance)
 };
 
 // Every neighbouring pair with both places for its new knot, cheapest first.
@@ -320,6 +323,7 @@ std::vector<Exchange> exchanges(const Degree_one_search& search, const Exchange_
     if(closed) turn(vk, X, i, m);
     const Index at = closed ? 0 : i; // the pair is knots at and at + 1 of vk
     const double before = x.chain_minimum(vk, X, at - 1, at + 2, nullptr);
+    const Index pair_samples = search.samples_between(vk, at - 2, at + 3);
     Knots without;
     std::vector<Index> from;
     for(Index k = 0; k < K; ++k)
@@ -337,22 +341,30 @@ std::vector<Exchange> exchanges(const Degree_one_search& search, const Exchange_
       Eigen::MatrixXd X_with = x.rebuilt(without, X_without, with, from_with);
       search.sweep(with, X_with, at, at + 1);
       const double e = x.chain_minimum(with, X_with, at - 1, at + 1, nullptr) - before;
-      if(std::isfinite(e)) moves.push_back({i, search.knot_candidate(with, at), e});
+      if(std::isfinite(e)) moves.push_back({i, search.knot_candidate(with, at), e, pair_samples});
     }
     // Elsewhere: in the span away from the pair's three where an added knot gains most.
     const double removed = x.chain_minimum(without, X_without, at - 1, at, nullptr) - before;
-    Exchange far{i, 0, std::numeric_limits<double>::infinity()};
+    Exchange far{i, 0, std::numeric_limits<double>::infinity(), 0};
     for(Index v = first_span; v < K; ++v) {
       const Index turned_v = closed ? v - i - floor_div(v - i, K) * K : v; // the span in vk
       if((turned_v >= at - 1 && turned_v <= at + 1) || (closed && turned_v == K - 1)) continue;
       const Insertion& e = elsewhere[std::size_t(v - first_span)];
-      // The candidate as vk counts them: knots before knot i are a period on once turned.
-      if(removed - e.gain < far.estimate) far = {i, closed && v < i ? e.added + m : e.added, removed - e.gain};
+      // The candidate as vk counts them: knots before knot i are a period on once turned.  A
+      // tie goes to the first span.
+      const Index samples = pair_samples + e.samples;
+      if(removed - e.gain < far.estimate - search.tie(std::max(samples, far.samples)))
+        far = {i, closed && v < i ? e.added + m : e.added, removed - e.gain, samples};
     }
     if(std::isfinite(far.estimate)) moves.push_back(far);
   }
-  std::stable_sort(moves.begin(), moves.end(), [](const Exchange& a, const Exchange& b) { return a.estimate < b.estimate; });
-  return moves;
+  // Cheapest first; tied estimates (a symmetric curve's, up to rounding) in the order built,
+  // by pair and then place: an order of indices, the same for a moved copy.
+  std::vector<double> estimate, tie;
+  for(const Exchange& move : moves) estimate.push_back(move.estimate), tie.push_back(search.tie(move.samples));
+  std::vector<Exchange> ordered;
+  for(std::size_t q : order_with_ties(estimate, tie)) ordered.push_back(moves[q]);
+  return ordered;
 }
 
 } // namespace

@@ -18,8 +18,6 @@
 
 #include "degree_one_search.h"
 
-#include <numeric>
-
 namespace CGAL {
 namespace Spline_approximation {
 namespace internal {
@@ -70,9 +68,10 @@ Spline_fit relocate_and_remove(const Problem& p, const Goal& goal, Spline_fit fi
     const Knots old_vk = search.unwrapped(fit.kept);
     const Eigen::MatrixXd& old_X = fit.spline.control_points;
     const std::vector<double> cost = search.removal_costs(old_vk, old_X);
-    std::vector<std::size_t> order(cost.size());
-    std::iota(order.begin(), order.end(), std::size_t(0));
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cost[a] < cost[b]; });
+    // Cheapest first, tied costs (a symmetric curve's, up to rounding) by knot index.
+    std::vector<double> tie(cost.size());
+    for(Index i = 0; i < Index(cost.size()); ++i) tie[std::size_t(i)] = search.tie(search.samples_between(old_vk, i - 2, i + 2));
+    const std::vector<std::size_t> order = order_with_ties(cost, tie);
     bool removed = false;
     for(std::size_t q = 0; q < order.size() && !removed; ++q) {
       const Index i = Index(order[q]);
