@@ -227,8 +227,14 @@ Spline_fit fit_spline(const Eigen::MatrixXd& samples, const Eigen::VectorXd& par
       throw Invalid_input("spline fit: the parameters must increase strictly (parameters " + std::to_string(j - 1) +
                           " and " + std::to_string(j) + ")");
   }
+  // The algorithms see the samples about their centroid, the fit moved back at the end: the fit
+  // does not depend on where the curve lies, and neither should its rounding (the sums of squares
+  // would carry the distance from the origin); the tie tolerances (spline_numerics.h) are taken
+  // relative to the curve's own spread.
+  const Eigen::RowVectorXd centre = samples.colwise().mean();
+  const Eigen::MatrixXd centred = samples.rowwise() - centre;
   internal::Problem p;
-  p.samples = &samples;
+  p.samples = &centred;
   p.degree = options.degree;
   p.closed = options.closed_curve;
   const std::size_t g = options.candidate_grid_size;
@@ -277,6 +283,7 @@ Spline_fit fit_spline(const Eigen::MatrixXd& samples, const Eigen::VectorXd& par
     break;
   }
   if(fit.errors.size() != n) fit = internal::finish(p, fit.kept, goal.lambda); // the errors of every sample
+  fit.spline.control_points.rowwise() += centre;
   fit.parameters = p.t;
   fit.candidates = p.candidates;
   fit.algorithm = options.algorithm;
@@ -299,8 +306,11 @@ Spline_fit least_squares_spline(const Eigen::MatrixXd& samples, const Eigen::Vec
        (i > 0 && !(interior_knots[i] > interior_knots[i - 1])))
       throw Invalid_input(closed ? "least-squares spline: the knots of a closed curve must increase strictly within [0, 1)"
                                  : "least-squares spline: the interior knots must increase strictly within (0, 1)");
+  // Centred as in fit_spline, so that a fit there on the same knots rounds alike.
+  const Eigen::RowVectorXd centre = samples.colwise().mean();
+  const Eigen::MatrixXd centred = samples.rowwise() - centre;
   internal::Problem p;
-  p.samples = &samples;
+  p.samples = &centred;
   p.t = t;
   p.degree = degree;
   p.candidates = interior_knots;
@@ -308,6 +318,7 @@ Spline_fit least_squares_spline(const Eigen::MatrixXd& samples, const Eigen::Vec
   std::vector<std::size_t> all(std::size_t(interior_knots.size()));
   for(std::size_t i = 0; i < all.size(); ++i) all[i] = i;
   Spline_fit fit = internal::finish(p, all, 0);
+  fit.spline.control_points.rowwise() += centre;
   fit.parameters = p.t;
   fit.candidates = p.candidates;
   return fit;

@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 
 namespace SA = CGAL::Spline_approximation;
@@ -44,6 +45,23 @@ Eigen::MatrixXd relocation_walk(Eigen::Index n, unsigned seed)
     heading += 0.2 * g(gen);
     x += 0.01 * std::cos(heading);
     y += 0.01 * std::sin(heading);
+    P.row(j) << x, y;
+  }
+  return P;
+}
+
+// A noisy blob of five lobes, closed (its last sample is not its first).
+Eigen::MatrixXd relocation_loop(Eigen::Index n, unsigned seed)
+{
+  std::mt19937 gen(seed);
+  std::normal_distribution<double> g(0.0, 0.002);
+  std::uniform_real_distribution<double> phase(0.0, 2 * M_PI);
+  const double p3 = phase(gen), p5 = phase(gen);
+  Eigen::MatrixXd P(n, 2);
+  for(Eigen::Index j = 0; j < n; ++j) {
+    const double a = 2 * M_PI * double(j) / double(n), r = 1 + 0.3 * std::cos(3 * a + p3) + 0.15 * std::sin(5 * a + p5);
+    const double x = r * std::cos(a) + g(gen);
+    const double y = r * std::sin(a) + g(gen);
     P.row(j) << x, y;
   }
   return P;
@@ -191,4 +209,43 @@ TEST(KnotRelocation, RemovalJudgedAfterAWholeRelocationReachesTheOptimum)
   const SA::Spline_fit f = SA::fit_spline(P, o);
   EXPECT_TRUE(f.within_bound);
   EXPECT_EQ(f.number_of_knots(), exact.number_of_knots());
+}
+
+// Where no single removal holds, two neighbouring knots are replaced by one (between their
+// outer neighbours, or where an added knot gains most) and the knots around slide, one at a
+// time and in runs.  Without that move greedy removal with relocation stops over the dynamic
+// programming's optimum on these curves (the walk: 22 knots against 20; the closed blob: 9
+// against 8, and so does the penalty decomposition); with it, at the optimum, within the bound.
+TEST(KnotRelocation, TwoNeighboursReplacedByOneReachTheOptimum)
+{
+  struct Case
+  {
+    const char* name;
+    Eigen::MatrixXd P;
+    bool closed;
+    double relative; // the RMS bound, a fraction of the diagonal
+    std::vector<SA::Fit_algorithm> heuristics;
+  };
+  const Case cases[] = {
+      {"walk", relocation_walk(1500, 1), false, 1e-2, {SA::Fit_algorithm::greedy_removal}},
+      {"closed blob", relocation_loop(1500, 2), true, 2e-2,
+       {SA::Fit_algorithm::greedy_removal, SA::Fit_algorithm::penalty_decomposition}}};
+  for(const Case& c : cases) {
+    SA::Fit_options o;
+    o.degree = 1;
+    o.closed_curve = c.closed;
+    o.candidate_grid_size = 60;
+    o.rms_error = c.relative * (c.P.colwise().maxCoeff() - c.P.colwise().minCoeff()).norm();
+    o.algorithm = SA::Fit_algorithm::dynamic_programming;
+    const SA::Spline_fit exact = SA::fit_spline(c.P, o);
+    ASSERT_TRUE(exact.within_bound) << c.name;
+    for(SA::Fit_algorithm a : c.heuristics) {
+      o.algorithm = a;
+      const SA::Spline_fit f = SA::fit_spline(c.P, o);
+      SCOPED_TRACE(std::string(c.name) + " " + SA::algorithm_name(a));
+      EXPECT_TRUE(f.within_bound);
+      EXPECT_LE(f.rms_error, *o.rms_error);
+      EXPECT_EQ(f.number_of_knots(), exact.number_of_knots());
+    }
+  }
 }

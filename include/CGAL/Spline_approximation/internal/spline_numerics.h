@@ -184,6 +184,48 @@ enum class Sample_errors { kept, summary_only };
 Spline_fit finish(const Problem& p, const std::vector<std::size_t>& kept, double lambda,
                   Sample_errors detail = Sample_errors::kept);
 
+// Rounding-level ties.  On a symmetric curve many choices (which knot to remove, where a knot
+// slides) cost the same in exact arithmetic, and a moved or scaled copy of the data rounds
+// them into another order: a choice by the computed order alone makes the fit depend on the
+// motion.  Values closer than a tolerance are taken as equal and chosen among by index.
+//
+// The samples' spread: the largest squared distance from their centroid (the same for a moved
+// copy, s^2 times it for a copy scaled by s).
+inline double squared_spread(const Eigen::MatrixXd& samples)
+{
+  if(samples.rows() == 0) return 0;
+  const Eigen::RowVectorXd centre = samples.colwise().mean();
+  return (samples.rowwise() - centre).rowwise().squaredNorm().maxCoeff();
+}
+// The tolerance on a squared error summed over w samples is 1e-11 w times the spread: each
+// term is at most the spread on centred data (fit_spline centres it), rounded at some 1e-16 of
+// it.  Measured (test Invariance.SymmetricClosedCurvesUnderMotionAndScale, copies moved by 300
+// times the size and scaled by 1e3 and 1e-3): 1e-15 is enough there, 1e-17 is not; 1e-11 leaves
+// room for longer sums and worse-conditioned solves, and stays far below any difference that
+// matters for a bound (a max error of 1e-4 of the size is a squared error of 1e-8 of the spread
+// a sample).  A copy moved 3e5 times its size away is not the same data at this level (its
+// coordinates are rounded at 1e-16 of 3e5): there the ties break again.
+constexpr double squared_error_tie = 1e-11;
+// Indices 0 .. size - 1 by increasing value; values that follow within a tolerance of each
+// other in that order (a chain; the larger of the two values' tolerances) are one group, taken
+// in index order.
+inline std::vector<std::size_t> order_with_ties(const std::vector<double>& value, const std::vector<double>& tolerance)
+{
+  std::vector<std::size_t> order(value.size());
+  for(std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return value[a] < value[b]; });
+  for(std::size_t first = 0; first < order.size();) {
+    std::size_t last = first + 1;
+    for(; last < order.size(); ++last) {
+      const std::size_t a = order[last - 1], b = order[last];
+      if(value[b] - value[a] > std::max(tolerance[a], tolerance[b])) break;
+    }
+    std::sort(order.begin() + std::ptrdiff_t(first), order.begin() + std::ptrdiff_t(last));
+    first = last;
+  }
+  return order;
+}
+
 // Strictly better for the goal: penalty mode by objective; bound mode by meeting the bound,
 // then fewer knots, then smaller squared error.
 bool better(const Spline_fit& a, const Spline_fit& b, const Goal& goal);
