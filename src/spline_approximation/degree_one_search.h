@@ -408,6 +408,24 @@ bool remove_two_add_one(const Problem& p, const Goal& goal, const Degree_one_sea
 // A closed curve's window of a knot needs five distinct vertices.
 constexpr std::size_t fewest_closed_knots = 5;
 
+// Whether a move's local model may meet the goal with K knots over n samples (a refit
+// decides): by its largest error for a max bound, else by its squared error (a callable,
+// computed only then).  Shared by removals (knot_relocation.cpp) and exchanges
+// (knot_exchange.cpp).
+template <class Squared>
+bool model_may_meet(const Goal& goal, double largest, const Squared& squared, double n, double K, double objective)
+{
+  if(goal.max_error) return largest <= *goal.max_error;
+  if(goal.rms_error) return squared() <= *goal.rms_error * *goal.rms_error * n;
+  return squared() + goal.lambda * K < objective;
+}
+
+// Whether a refit keeps the goal: a bound met, or (penalty) a lower objective than the fit's.
+inline bool keeps_goal(const Goal& goal, const Spline_fit& refit, const Spline_fit& fit)
+{
+  return goal.is_bound() ? goal.met(refit) : refit.objective < fit.objective;
+}
+
 } // namespace internal
 } // namespace Spline_approximation
 } // namespace CGAL

@@ -423,15 +423,12 @@ bool remove_two_add_one(const Problem& p, const Goal& goal, const Degree_one_sea
       squared += after.first - before.first;
       largest = std::max(largest, after.second);
     }
-    const bool promising = goal.max_error  ? largest <= *goal.max_error
-                           : goal.rms_error ? squared <= *goal.rms_error * *goal.rms_error * n
-                                            : squared + goal.lambda * double(K1) < fit.objective;
-    if(!promising) continue;
+    if(!model_may_meet(goal, largest, [&] { return squared; }, n, double(K1), fit.objective)) continue;
     std::vector<std::size_t> kept;
     search.wrap(vk, kept, X);
     // As for a removal: the refit first (a max bound may fail where the model met it), then
     // two rounds of relocation, kept if the goal still holds.
-    auto holds = [&](const Spline_fit& f) { return goal.is_bound() ? goal.met(f) : f.objective < fit.objective; };
+    auto holds = [&](const Spline_fit& f) { return keeps_goal(goal, f, fit); };
     Spline_fit trial = finish(p, kept, goal.lambda, Sample_errors::summary_only);
     if(!holds(trial)) continue;
     Spline_fit moved = relocated(p, search, trial, goal.lambda, 2);

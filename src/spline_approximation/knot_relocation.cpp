@@ -93,15 +93,12 @@ Spline_fit relocate_and_remove(const Problem& p, const Goal& goal, Spline_fit fi
       auto squared = [&] { // the squared error of the whole local model
         return fit.squared_error - search.errors_between(old_vk, old_X, v0, whole ? K + 1 : v1 + 1).first + after.first;
       };
-      const bool promising = goal.max_error  ? after.second <= *goal.max_error
-                             : goal.rms_error ? squared() <= *goal.rms_error * *goal.rms_error * n
-                                              : squared() + goal.lambda * double(K) < fit.objective;
-      if(!promising) continue;
+      if(!model_may_meet(goal, after.second, squared, n, double(K), fit.objective)) continue;
       std::vector<std::size_t> kept;
       search.wrap(vk, kept, X);
       // The refit first (a max bound may fail where the local model met it: the refit moves
       // every vertex a little), the sweeps over all knots only for a removal that holds.
-      auto holds = [&](const Spline_fit& f) { return goal.is_bound() ? goal.met(f) : f.objective < fit.objective; };
+      auto holds = [&](const Spline_fit& f) { return keeps_goal(goal, f, fit); };
       Spline_fit trial = finish(p, kept, goal.lambda, Sample_errors::summary_only);
       if(!holds(trial)) continue;
       Spline_fit moved = relocated(p, search, trial, goal.lambda, rounds_after_removal);
