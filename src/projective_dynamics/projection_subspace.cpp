@@ -83,35 +83,64 @@ internal::Projection_subspace_factors projection_subspace_factors(const Elastic_
   const Positions& x = model.rest_positions();
   const auto& S = model.selection_matrix();
   Eigen::MatrixXd P(rows, 3);
-  std::vector<Eigen::Triplet<double>> candidates; // C is sparse: an element sees a few samples
   Eigen::VectorXd measure(rows);
-  for(int e : members)
-  {
+  // The scaled candidates B = D^{1/2} C (C is sparse: an element sees a few samples), in two
+  // passes over the elements: the entries per row are counted, then written straight into B's
+  // compressed arrays.  At 1.7 million tets B holds ~100 million entries; triplets and their
+  // sorted copies, or vectors grown while filling, took several GB more than B itself.
+  Projection_subspace_factors f;
+  f.B.resize(rows, 4 * m);
+  Eigen::VectorXd omega(m);
+  double out[9];
+  auto candidates_of = [&](int e) { // fills out (the rest projection) and omega (the weights)
     const Element& el = elements[std::size_t(e)];
-    const int r0 = el.first_row - first_row;
-    double value[9], out[9];
+    double value[9];
     for(int r = 0; r < el.rows; ++r)
     {
       const Eigen::RowVector3d v = S.row(el.first_row + r) * x;
       for(int c = 0; c < 3; ++c) value[3 * r + c] = v[c];
     }
     model.project(e, value, out);
-    Eigen::VectorXd omega = Eigen::VectorXd::Zero(m);
-    const std::vector<int> vertices = internal::element_vertices(model, e);
-    for(int v : vertices)
+    omega.setZero();
+    for(int v : internal::element_vertices(model, e))
       for(Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(W, v); it; ++it) omega[it.col()] += it.value();
     omega /= omega.sum();
+  };
+  int* start = f.B.outerIndexPtr();
+  start[0] = 0;
+  for(int e : members)
+  {
+    const Element& el = elements[std::size_t(e)];
+    const int r0 = el.first_row - first_row;
+    candidates_of(e);
     for(int r = 0; r < el.rows; ++r)
     {
       measure[r0 + r] = el.measure;
       for(int c = 0; c < 3; ++c) P(r0 + r, c) = out[3 * r + c];
+      int count = 0;
       for(int j = 0; j < m; ++j)
         if(omega[j] != 0)
-        {
-          for(int c = 0; c < 3; ++c)
-            if(out[3 * r + c] != 0) candidates.emplace_back(r0 + r, 4 * j + c, omega[j] * out[3 * r + c]);
-          candidates.emplace_back(r0 + r, 4 * j + 3, omega[j]);
-        }
+          for(int c = 0; c < 4; ++c) count += c == 3 || out[3 * r + c] != 0;
+      start[r0 + r + 1] = count; // per row for now
+    }
+  }
+  for(int r = 0; r < rows; ++r) start[r + 1] += start[r];
+  f.B.resizeNonZeros(start[rows]);
+  int* column = f.B.innerIndexPtr();
+  double* entry = f.B.valuePtr();
+  for(int e : members)
+  {
+    const Element& el = elements[std::size_t(e)];
+    const int r0 = el.first_row - first_row;
+    candidates_of(e);
+    const double root = std::sqrt(el.measure);
+    for(int r = 0; r < el.rows; ++r)
+    {
+      int k = start[r0 + r];
+      for(int j = 0; j < m; ++j) // columns in increasing order, as compressed rows need
+        if(omega[j] != 0)
+          for(int c = 0; c < 4; ++c)
+            if(c == 3 || out[3 * r + c] != 0) column[k] = 4 * j + c, entry[k++] = root * omega[j] * (c == 3 ? 1.0 : out[3 * r + c]);
     }
   }
 
@@ -127,17 +156,15 @@ internal::Projection_subspace_factors projection_subspace_factors(const Elastic_
   // The scaled candidates B = D^{1/2} C without the span of Q: B' = B - Q Q^T B, never formed
   // densely (rows x 4m): its Gram matrix is B^T B - (Q^T B)^T (Q^T B), and its leading columns
   // are B E - Q (Q^T B E).
-  Projection_subspace_factors f;
-  f.B.resize(rows, 4 * m);
-  f.B.setFromTriplets(candidates.begin(), candidates.end());
-  f.B = root.asDiagonal() * f.B;
-  const Eigen::MatrixXd QtB = (Eigen::SparseMatrix<double>(f.B.transpose()) * Q).transpose(); // z x 4m
-  // B^T B accumulated densely row by row (4m x 4m is small; a sparse product of B^T and B took
-  // 2.3 s of a 6 s precomputation on a 68,666-tet armadillo).
-  Eigen::MatrixXd G = Eigen::MatrixXd::Zero(4 * m, 4 * m);
+  // Q^T B and B^T B accumulated row by row (4m x 4m is small; a sparse product of B^T and B took
+  // 2.3 s of a 6 s precomputation on a 68,666-tet armadillo, and B^T is a copy of B).
+  Eigen::MatrixXd QtB = Eigen::MatrixXd::Zero(z, 4 * m), G = Eigen::MatrixXd::Zero(4 * m, 4 * m);
   for(Eigen::Index r = 0; r < f.B.rows(); ++r)
     for(Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator a(f.B, r); a; ++a)
+    {
+      QtB.col(a.col()) += a.value() * Q.row(r).transpose();
       for(Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator b(f.B, r); b; ++b) G(a.col(), b.col()) += a.value() * b.value();
+    }
   G -= QtB.transpose() * QtB;
   if(l - z > 4 * m)
     throw Invalid_input("l = " + std::to_string(l) + " exceeds the " + std::to_string(4 * m) + " candidate columns");
