@@ -88,13 +88,8 @@ Positions Reduced_simulator::positions_of(const std::vector<int>& vertices) cons
   Positions out(Eigen::Index(vertices.size()), 3);
   for(std::size_t q = 0; q < vertices.size(); ++q)
   {
-    double s0 = 0, s1 = 0, s2 = 0;
-    for(internal::Sparse::InnerIterator it(impl_->U, vertices[q]); it; ++it)
-    {
-      const double* r = ar.data() + 3 * it.col();
-      s0 += it.value() * r[0], s1 += it.value() * r[1], s2 += it.value() * r[2];
-    }
-    out(Eigen::Index(q), 0) = s0, out(Eigen::Index(q), 1) = s1, out(Eigen::Index(q), 2) = s2;
+    const std::array<double, 3> y = internal::row_times(impl_->U, vertices[q], ar);
+    out(Eigen::Index(q), 0) = y[0], out(Eigen::Index(q), 1) = y[1], out(Eigen::Index(q), 2) = y[2];
   }
   return out;
 }

@@ -45,6 +45,19 @@ typedef Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> Rows;
 typedef std::chrono::steady_clock Clock;
 inline double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
+// Row v of B x for x given by rows (k x 3, row-major): each entry of B's row reads three
+// neighbouring numbers (Eigen's sparse row times a column-major x walks x once per column).
+inline std::array<double, 3> row_times(const Sparse& B, Eigen::Index v, const Rows& x)
+{
+  std::array<double, 3> y{0, 0, 0};
+  for(Sparse::InnerIterator it(B, v); it; ++it)
+  {
+    const double* r = x.data() + 3 * it.col();
+    y[0] += it.value() * r[0], y[1] += it.value() * r[1], y[2] += it.value() * r[2];
+  }
+  return y;
+}
+
 
 inline void check_reduction(const Reduction_options& r, int n)
 {
@@ -267,13 +280,8 @@ struct Reduced_simulator::Impl : internal::Scene_handles
     auto body = [&](std::size_t begin, std::size_t end) {
       for(std::size_t v = begin; v < end; ++v)
       {
-        double s0 = 0, s1 = 0, s2 = 0;
-        for(Sparse::InnerIterator it(B, Eigen::Index(v)); it; ++it)
-        {
-          const double* r = xr.data() + 3 * it.col();
-          s0 += it.value() * r[0], s1 += it.value() * r[1], s2 += it.value() * r[2];
-        }
-        out(Eigen::Index(v), 0) = s0, out(Eigen::Index(v), 1) = s1, out(Eigen::Index(v), 2) = s2;
+        const std::array<double, 3> y = internal::row_times(B, Eigen::Index(v), xr);
+        out(Eigen::Index(v), 0) = y[0], out(Eigen::Index(v), 1) = y[1], out(Eigen::Index(v), 2) = y[2];
       }
     };
     if(pool) pool->run(std::size_t(B.rows()), body);
@@ -309,13 +317,7 @@ struct Reduced_simulator::Impl : internal::Scene_handles
         auto position_of = [&](Eigen::Index u) -> const double* {
           for(std::size_t i = 0; i < vertex.size(); ++i)
             if(vertex[i] == u) return position[i].data();
-          std::array<double, 3> y{0, 0, 0};
-          for(Sparse::InnerIterator it(U_used, u); it; ++it)
-          {
-            const double* r = xr.data() + 3 * it.col();
-            y[0] += it.value() * r[0], y[1] += it.value() * r[1], y[2] += it.value() * r[2];
-          }
-          vertex.push_back(u), position.push_back(y);
+          vertex.push_back(u), position.push_back(internal::row_times(U_used, u, xr));
           return position.back().data();
         };
         for(std::size_t c = begin; c < end; ++c)
