@@ -74,8 +74,7 @@ void Reduced_simulator::set_coordinate_velocities(const Eigen::MatrixXd& a_dot)
 Positions Reduced_simulator::positions() const
 {
   Positions q;
-  // Serial: a const query may come from any thread, the pool serves the step's.
-  Impl::rows_times(impl_->U, impl_->a, q, nullptr);
+  Impl::rows_times(impl_->U, impl_->a, q);
   return q;
 }
 Positions Reduced_simulator::velocities() const { return impl_->U * impl_->a_dot; }

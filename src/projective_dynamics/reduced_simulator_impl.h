@@ -269,23 +269,17 @@ struct Reduced_simulator::Impl : internal::Scene_handles
     timings.factorization = seconds_since(start);
   }
 
-  // The rows of B x (B sparse, row-major, e.g. rows of U; x with 3 columns), on the thread pool
-  // if given: x copied to rows first, so that each entry of B reads three neighbouring numbers
-  // (Eigen's product walks B once per column of x).
-  template <class Out>
-  static void rows_times(const Sparse& B, const Eigen::MatrixXd& x, Out& out, Model_reduction::internal::Thread_pool* pool)
+  // The rows of B x (B sparse, row-major, e.g. U; x with 3 columns), x copied to rows first.
+  // Serial: a const query (positions()) may come from any thread; the pool serves the step's.
+  static void rows_times(const Sparse& B, const Eigen::MatrixXd& x, Positions& out)
   {
     const Rows xr = x;
     out.resize(B.rows(), 3);
-    auto body = [&](std::size_t begin, std::size_t end) {
-      for(std::size_t v = begin; v < end; ++v)
-      {
-        const std::array<double, 3> y = internal::row_times(B, Eigen::Index(v), xr);
-        out(Eigen::Index(v), 0) = y[0], out(Eigen::Index(v), 1) = y[1], out(Eigen::Index(v), 2) = y[2];
-      }
-    };
-    if(pool) pool->run(std::size_t(B.rows()), body);
-    else body(0, std::size_t(B.rows()));
+    for(Eigen::Index v = 0; v < B.rows(); ++v)
+    {
+      const std::array<double, 3> y = internal::row_times(B, v, xr);
+      out(v, 0) = y[0], out(v, 1) = y[1], out(v, 2) = y[2];
+    }
   }
 
   // Projections of the sampled elements and each group's fit right-hand side (J V)^T p_S (l x 3,
