@@ -44,13 +44,6 @@ Eigen::VectorXd smallest_floor_push(const Eigen::SparseMatrix<double, Eigen::Row
                                     double tolerance, Floor_push_report* report = nullptr,
                                     Eigen::VectorXd* multipliers = nullptr);
 
-/// The same push within the span of the basis columns `push_columns` only (the others do not
-/// move): `delta_T` minimises `delta_T^T Mr(T, T) delta_T` under the same constraints.  It is
-/// `smallest_floor_push` on `push_subspace(U, Mr, T)`: a problem of the columns of T that the
-/// contact rows touch (a body resting on its feet: a few of its samples).  For the position
-/// subspace's per-sample translations (columns `4 j + 3`, weights summing to one at every
-/// vertex) a push always exists: the floor lifts the body by a smooth blend of its samples'
-/// translations.
 /// The rows of U on the columns `columns` (as columns 0, 1, ...) and the inverse of `Mr` on
 /// them: what `smallest_floor_push` needs for pushes within those columns (made once per
 /// simulator: O(|T|^3)).
@@ -63,6 +56,13 @@ struct Push_subspace
 Push_subspace push_subspace(const Eigen::SparseMatrix<double, Eigen::RowMajor>& U, const Eigen::MatrixXd& Mr,
                             const std::vector<int>& columns);
 
+/// The same push within the span of the basis columns `push_columns` only (the others do not
+/// move): `delta_T` minimises `delta_T^T Mr(T, T) delta_T` under the same constraints.  It is
+/// `smallest_floor_push` on `push_subspace(U, Mr, T)`: a problem of the columns of T that the
+/// contact rows touch (a body resting on its feet: a few of its samples).  For the position
+/// subspace's per-sample translations (columns `4 j + 3`, weights summing to one at every
+/// vertex) a push always exists: the floor lifts the body by a smooth blend of its samples'
+/// translations.
 Eigen::VectorXd smallest_floor_push_in(const Eigen::SparseMatrix<double, Eigen::RowMajor>& U, const Eigen::MatrixXd& Mr,
                                        const std::vector<int>& push_columns, const std::vector<int>& rows,
                                        const Eigen::VectorXd& need, const std::vector<int>& held, double tolerance,
